@@ -1,0 +1,11 @@
+// Each subcommand lives in its own file (cmd_<name>.cpp) and registers itself here.
+// A command's callback throws InputError for bad input; main() turns that into exit code 1.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace rastrace {
+
+void add_version_command(CLI::App& app);
+
+}  // namespace rastrace

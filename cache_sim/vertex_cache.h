@@ -1,0 +1,104 @@
+// The post-transform vertex cache: fully associative, k entries, keyed by vertex id.
+// FIFO is what most hardware built (Hoppe 1999); LRU is the other textbook policy.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "traces/events.h"
+
+namespace rastrace {
+
+enum class VertexCachePolicy { Fifo, Lru };
+
+const char* to_string(VertexCachePolicy policy);
+// "fifo" or "lru"; throws InputError otherwise.
+VertexCachePolicy parse_vertex_cache_policy(const std::string& text);
+
+class VertexCache {
+ public:
+  // entries >= 1; throws InputError otherwise.
+  VertexCache(VertexCachePolicy policy, unsigned entries);
+
+  // Looks the vertex up; on a miss it is inserted (evicting per policy). Returns true on a hit.
+  bool access(std::uint32_t vertex) {
+    return policy_ == VertexCachePolicy::Fifo ? access_fifo(vertex) : access_lru(vertex);
+  }
+  void clear();
+
+  VertexCachePolicy policy() const { return policy_; }
+  unsigned entries() const { return entries_; }
+
+ private:
+  // FIFO as timestamps (meshoptimizer's trick): a vertex is resident while fewer than
+  // `entries` misses happened since it was inserted. Hits do not reorder a FIFO.
+  bool access_fifo(std::uint32_t vertex) {
+    if (vertex >= stamps_.size()) stamps_.resize(static_cast<std::size_t>(vertex) + 1, 0);
+    if (clock_ - stamps_[vertex] <= entries_) return true;
+    stamps_[vertex] = clock_++;
+    return false;
+  }
+  bool access_lru(std::uint32_t vertex);
+
+  VertexCachePolicy policy_;
+  unsigned entries_;
+  std::vector<std::uint64_t> stamps_;  // FIFO: insertion clock per vertex
+  std::uint64_t clock_;
+  std::vector<std::uint32_t> recency_;  // LRU: resident vertices, most recent first
+};
+
+struct VertexStreamStats {
+  std::uint64_t lookups = 0;      // indices looked up (restart indices excluded)
+  std::uint64_t misses = 0;       // vertex shader invocations
+  std::uint64_t triangles = 0;    // drawn (non-degenerate) triangles
+  std::uint64_t degenerate = 0;   // triangles with a repeated vertex: looked up, not drawn
+  std::uint64_t vertices = 0;     // distinct vertices referenced
+
+  double acmr() const { return triangles ? double(misses) / double(triangles) : 0.0; }
+  double atvr() const { return vertices ? double(misses) / double(vertices) : 0.0; }
+  // Hoppe's b: indices sent per drawn triangle (restart indices count: they are sent).
+  std::uint64_t indices_sent = 0;
+  double indices_per_triangle() const {
+    return triangles ? double(indices_sent) / double(triangles) : 0.0;
+  }
+};
+
+// Runs an index stream through a vertex cache, primitive by primitive as the pipeline does.
+VertexStreamStats simulate_vertex_stream(std::span<const std::uint32_t> indices, PrimitiveType type,
+                                         VertexCachePolicy policy, unsigned entries,
+                                         std::uint32_t restart_index = kNoRestart);
+
+// Calls visit(a, b, c) for every triangle of the stream in draw order (degenerates included),
+// with the winding GL gives it (a strip's odd triangles are flipped back to the strip's winding).
+template <typename Visit>
+void for_each_triangle(std::span<const std::uint32_t> indices, PrimitiveType type,
+                       std::uint32_t restart_index, Visit&& visit) {
+  switch (type) {
+    case PrimitiveType::TriangleList:
+      for (std::size_t i = 0; i + 2 < indices.size(); i += 3) visit(indices[i], indices[i + 1], indices[i + 2]);
+      break;
+    case PrimitiveType::TriangleListAdjacency:
+      for (std::size_t i = 0; i + 5 < indices.size(); i += 6) visit(indices[i], indices[i + 2], indices[i + 4]);
+      break;
+    case PrimitiveType::TriangleStrip: {
+      std::size_t in_strip = 0;
+      for (std::size_t i = 0; i < indices.size(); ++i) {
+        if (indices[i] == restart_index) {
+          in_strip = 0;
+          continue;
+        }
+        if (++in_strip >= 3) {
+          // GL: triangle i of a strip is (v[i], v[i+1], v[i+2]) for even i, (v[i+1], v[i], v[i+2]) for odd.
+          const bool odd = (in_strip - 3) % 2 == 1;
+          if (odd) visit(indices[i - 1], indices[i - 2], indices[i]);
+          else visit(indices[i - 2], indices[i - 1], indices[i]);
+        }
+      }
+      break;
+    }
+  }
+}
+
+}  // namespace rastrace

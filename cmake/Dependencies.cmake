@@ -1,0 +1,22 @@
+# Every dependency is a Debian package installed by scripts/setup.sh.
+find_package(glm REQUIRED CONFIG)
+find_package(OpenImageIO REQUIRED CONFIG)
+find_package(assimp REQUIRED CONFIG)
+find_package(zstd REQUIRED CONFIG)
+find_package(CLI11 REQUIRED CONFIG)
+find_package(nlohmann_json REQUIRED CONFIG)
+find_package(meshoptimizer REQUIRED CONFIG)
+find_package(GTest REQUIRED CONFIG)
+find_package(benchmark REQUIRED CONFIG)
+find_package(Threads REQUIRED)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
+
+# LEMON ships a config file that sets variables only; wrap it in a target.
+find_package(lemon REQUIRED CONFIG)
+if(NOT TARGET lemon::lemon)
+  add_library(lemon::lemon UNKNOWN IMPORTED)
+  set_target_properties(lemon::lemon PROPERTIES
+    IMPORTED_LOCATION "${LEMON_LIBRARY}"
+    INTERFACE_INCLUDE_DIRECTORIES "${LEMON_INCLUDE_DIR}")
+endif()

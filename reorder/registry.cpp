@@ -1,0 +1,41 @@
+#include <algorithm>
+#include <numeric>
+
+#include "core/error.h"
+#include "reorder/ordering.h"
+
+namespace rastrace {
+
+const std::vector<ReorderAlgorithm>& reorder_algorithms() {
+  static const std::vector<ReorderAlgorithm> algorithms = {
+      {"original", "file order", reorder_original},
+      {"random", "uniformly random face order (seeded)", reorder_random},
+  };
+  return algorithms;
+}
+
+const ReorderAlgorithm& find_reorder_algorithm(const std::string& name) {
+  for (const ReorderAlgorithm& algorithm : reorder_algorithms())
+    if (algorithm.name == name) return algorithm;
+  std::string known;
+  for (const ReorderAlgorithm& algorithm : reorder_algorithms())
+    known += (known.empty() ? "" : ", ") + algorithm.name;
+  throw InputError("unknown ordering algorithm '" + name + "': expected one of " + known);
+}
+
+std::vector<std::uint32_t> indices_in_face_order(const Mesh& mesh, const std::vector<std::uint32_t>& face_order) {
+  std::vector<std::uint32_t> indices;
+  indices.reserve(face_order.size() * 3);
+  for (const std::uint32_t face : face_order)
+    indices.insert(indices.end(), mesh.indices.begin() + face * 3, mesh.indices.begin() + face * 3 + 3);
+  return indices;
+}
+
+Ordering list_ordering(const Mesh& mesh, std::vector<std::uint32_t> face_order) {
+  Ordering ordering;
+  ordering.indices = indices_in_face_order(mesh, face_order);
+  ordering.face_order = std::move(face_order);
+  return ordering;
+}
+
+}  // namespace rastrace

@@ -1,0 +1,26 @@
+// Textures as the renderer samples them: 8-bit RGBA levels, level 0 first, down to 1x1.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rastrace {
+
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgba;  // 4 bytes per texel, row 0 is the top row (t = 0 in GL terms)
+
+  const std::uint8_t* texel(int x, int y) const {
+    return rgba.data() + (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                          static_cast<std::size_t>(x)) * 4;
+  }
+};
+
+struct Texture {
+  std::string name;
+  std::vector<Image> levels;  // levels[0] is the base; each next level halves with floor, to 1x1
+};
+
+}  // namespace rastrace

@@ -1,0 +1,45 @@
+// The event stream: the seam between the renderer and the cache simulator (DESIGN.md).
+// Events carry logical ids (vertex ids, texel coordinates), never byte addresses: memory
+// layouts are applied at replay.
+#pragma once
+
+#include <cstdint>
+
+namespace rastrace {
+
+enum class PrimitiveType : std::uint8_t {
+  TriangleList = 0,           // 3 indices per triangle
+  TriangleStrip = 1,          // GL strip; restart index ends a strip; alternating winding
+  TriangleListAdjacency = 2,  // 6 indices per primitive, GL_TRIANGLES_ADJACENCY order
+};
+
+inline constexpr std::uint32_t kNoRestart = 0xFFFFFFFFu;
+
+// Starts a draw call; its vertex fetches follow.
+struct DrawInfo {
+  std::uint32_t draw = 0;  // draw number within the frame
+  PrimitiveType type = PrimitiveType::TriangleList;
+  std::uint32_t restart_index = kNoRestart;  // TriangleStrip only: the primitive-restart index
+};
+
+// One index of the index stream, in submission order. A strip's restart index is not a fetch:
+// it appears as primitive_start on the next fetch.
+struct VertexFetch {
+  std::uint32_t vertex = 0;
+  // Set on the first index of each primitive: every triangle of a list, every strip, every
+  // 6-index adjacency primitive. Lets a replay rebuild the primitives (and skip degenerates).
+  bool primitive_start = false;
+};
+
+// One texel read by the sampler.
+struct TexelAccess {
+  std::uint32_t texture = 0;
+  std::uint8_t level = 0;
+  std::uint32_t x = 0;  // texel column, 0 at the left
+  std::uint32_t y = 0;  // texel row, 0 at the top of the image
+  std::uint16_t pixel_x = 0;
+  std::uint16_t pixel_y = 0;
+  std::uint32_t triangle = 0;  // the drawn triangle's number within the frame
+};
+
+}  // namespace rastrace
