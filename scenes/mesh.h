@@ -25,6 +25,7 @@ struct Material {
   std::string name;
   glm::vec4 diffuse{1.0f, 1.0f, 1.0f, 1.0f};  // modulates the texture
   TextureSource texture;
+  int texture = -1;  // index into Scene::textures once a scene is loaded; -1: untextured
 };
 
 // A regular W x H quad grid laid out as in Castano's article (vertex (x, y) = (W+1)*y + x).

@@ -31,6 +31,7 @@ struct SceneObject {
 struct Scene {
   std::string name;
   std::vector<SceneObject> objects;
+  std::vector<Texture> textures;  // every material's texture, with its mip chain
   Camera camera;
   int width = 512;
   int height = 512;
