@@ -24,7 +24,7 @@ struct TextureSource {
 struct Material {
   std::string name;
   glm::vec4 diffuse{1.0f, 1.0f, 1.0f, 1.0f};  // modulates the texture
-  TextureSource texture;
+  TextureSource texture_source;  // where the texture comes from (loaders fill this)
   int texture = -1;  // index into Scene::textures once a scene is loaded; -1: untextured
 };
 
