@@ -17,6 +17,8 @@ struct ReorderParams {
   VertexCachePolicy policy = VertexCachePolicy::Fifo;
   std::uint64_t seed = 1;
   double time_budget_seconds = 60.0;  // for iterative algorithms (local optimization)
+  std::string texgroup_base = "strip";     // texgroup: the algorithm ordering each group
+  std::string texgroup_regions = "auto";   // texgroup: auto, quadrant, chart or texture
 };
 
 struct Ordering {
@@ -51,5 +53,16 @@ Ordering list_ordering(const Mesh& mesh, std::vector<std::uint32_t> face_order);
 // One line per algorithm: defined in its own file.
 Ordering reorder_original(const Mesh& mesh, const ReorderParams& params);
 Ordering reorder_random(const Mesh& mesh, const ReorderParams& params);
+Ordering reorder_scanline(const Mesh& mesh, const ReorderParams& params);
+Ordering reorder_forsyth(const Mesh& mesh, const ReorderParams& params);
+Ordering reorder_tipsy(const Mesh& mesh, const ReorderParams& params);
+Ordering reorder_kcache(const Mesh& mesh, const ReorderParams& params);
+Ordering reorder_morton(const Mesh& mesh, const ReorderParams& params);
+Ordering reorder_hilbert(const Mesh& mesh, const ReorderParams& params);
+Ordering reorder_grid(const Mesh& mesh, const ReorderParams& params);
+
+// False when the algorithm cannot order this mesh: "grid" needs a make_grid grid (mesh.grid).
+// Tables skip such pairs; running one anyway throws InputError.
+bool reorder_algorithm_applies(const ReorderAlgorithm& algorithm, const Mesh& mesh);
 
 }  // namespace rastrace
