@@ -3,6 +3,7 @@
 
 #include "core/error.h"
 #include "reorder/ordering.h"
+#include "reorder/texgroup.h"
 
 namespace rastrace {
 
@@ -10,6 +11,12 @@ const std::vector<ReorderAlgorithm>& reorder_algorithms() {
   static const std::vector<ReorderAlgorithm> algorithms = {
       {"original", "file order", reorder_original},
       {"random", "uniformly random face order (seeded)", reorder_random},
+      {"scanline", "rows of triangles in order (Castano 2009 baseline)", reorder_scanline},
+      {"morton", "Morton order of triangle centroids", reorder_morton},
+      {"hilbert", "Hilbert order of triangle centroids (Skilling 2004)", reorder_hilbert},
+      {"grid", "Castano 2009, optimal grid rendering (regular grids only)", reorder_grid},
+      {"texgroup", "Yang, Mitra, Huang: faces grouped by texture region, each group by a base algorithm",
+       reorder_texgroup},
   };
   return algorithms;
 }
@@ -21,6 +28,10 @@ const ReorderAlgorithm& find_reorder_algorithm(const std::string& name) {
   for (const ReorderAlgorithm& algorithm : reorder_algorithms())
     known += (known.empty() ? "" : ", ") + algorithm.name;
   throw InputError("unknown ordering algorithm '" + name + "': expected one of " + known);
+}
+
+bool reorder_algorithm_applies(const ReorderAlgorithm& algorithm, const Mesh& mesh) {
+  return algorithm.name != "grid" || mesh.grid.has_value();
 }
 
 std::vector<std::uint32_t> indices_in_face_order(const Mesh& mesh, const std::vector<std::uint32_t>& face_order) {

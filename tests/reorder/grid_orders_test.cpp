@@ -1,0 +1,139 @@
+// Castano's 16x16 grid table (REFERENCE.md): the Scanline and Optimal rows reproduced exactly,
+// the published baselines approached, and the "optimized for 8, run on 16" figure.
+#include <gtest/gtest.h>
+#include <meshoptimizer.h>
+
+#include "cache_sim/vertex_cache.h"
+#include "core/error.h"
+#include "reorder/ordering.h"
+#include "scenes/procedural.h"
+
+namespace rastrace {
+namespace {
+
+VertexStreamStats run_on_fifo(const std::string& algo, const Mesh& mesh, unsigned target, unsigned simulated) {
+  ReorderParams params;
+  params.cache_size = target;
+  const Ordering ordering = find_reorder_algorithm(algo).run(mesh, params);
+  return simulate_vertex_stream(ordering.indices, ordering.type, VertexCachePolicy::Fifo, simulated, ordering.restart_index);
+}
+
+struct CastanoRow {
+  unsigned cache;
+  double acmr;
+  double atvr;
+};
+
+TEST(GridOrders, ScanlineMatchesCastanoAtEveryFifoSize) {
+  const Mesh grid = make_grid(16, 16);
+  for (const unsigned cache : {12u, 16u, 20u}) {
+    const VertexStreamStats stats = run_on_fifo("scanline", grid, cache, cache);
+    EXPECT_EQ(stats.triangles, 512u);
+    EXPECT_EQ(stats.vertices, 289u);
+    EXPECT_EQ(stats.misses, 544u) << "FIFO " << cache;
+    EXPECT_NEAR(stats.acmr(), 1.062, 0.0005) << "FIFO " << cache;
+    EXPECT_NEAR(stats.atvr(), 1.882, 0.0005) << "FIFO " << cache;
+  }
+}
+
+TEST(GridOrders, OptimalMatchesCastanoAtFifo16And20) {
+  const Mesh grid = make_grid(16, 16);
+  for (const CastanoRow row : {CastanoRow{20, 0.564, 1.000}, CastanoRow{16, 0.598, 1.059}}) {
+    const VertexStreamStats stats = run_on_fifo("grid", grid, row.cache, row.cache);
+    EXPECT_EQ(stats.triangles, 512u);
+    EXPECT_NEAR(stats.acmr(), row.acmr, 0.0005) << "FIFO " << row.cache;
+    EXPECT_NEAR(stats.atvr(), row.atvr, 0.0005) << "FIFO " << row.cache;
+  }
+  EXPECT_EQ(run_on_fifo("grid", grid, 20, 20).misses, 289u);
+  EXPECT_EQ(run_on_fifo("grid", grid, 16, 16).misses, 306u);
+}
+
+// The article's gridGen() at FIFO 12 cuts the grid into columns of 10 and 6 quads, both with a
+// prefetch row: 11 * 17 + 7 * 17 = 306 misses (ACMR 0.598, ATVR 1.059). Castano prints 0.600 /
+// 1.062 (307 misses): one more than his own published code gives under a strict FIFO, for
+// which meshoptimizer's analyzer agrees with ours. We keep the article's code and its count.
+TEST(GridOrders, OptimalAtFifo12IsTheArticlesCodeUnderStrictFifo) {
+  const Mesh grid = make_grid(16, 16);
+  const VertexStreamStats stats = run_on_fifo("grid", grid, 12, 12);
+  EXPECT_EQ(stats.misses, 306u);
+  EXPECT_NEAR(stats.acmr(), 0.598, 0.0005);
+  EXPECT_NEAR(stats.atvr(), 1.059, 0.0005);
+  ReorderParams params;
+  params.cache_size = 12;
+  const Ordering ordering = reorder_grid(grid, params);
+  const meshopt_VertexCacheStatistics peer =
+      meshopt_analyzeVertexCache(ordering.indices.data(), ordering.indices.size(), grid.vertex_count(), 12, 0, 0);
+  EXPECT_EQ(peer.vertices_transformed, 306u);
+}
+
+// Ordered for 8 (columns of 6, 6 and 4 quads, each prefetched): 7 + 7 + 5 vertex columns of 17,
+// 323 misses, ATVR 1.118 on FIFO 8 and on FIFO 16 alike (a larger cache cannot help: every
+// vertex is reloaded only at a column seam). Castano's comment gives 1.125 (325 misses).
+TEST(GridOrders, OptimalForEightRunOnSixteenIsNoBetterThanOnEight) {
+  const Mesh grid = make_grid(16, 16);
+  EXPECT_EQ(run_on_fifo("grid", grid, 8, 16).misses, 323u);
+  EXPECT_EQ(run_on_fifo("grid", grid, 8, 8).misses, 323u);
+  EXPECT_NEAR(run_on_fifo("grid", grid, 8, 16).atvr(), 1.118, 0.0005);
+}
+
+TEST(GridOrders, CacheOfWidthPlusTwoTransformsEveryVertexOnce) {
+  for (const int w : {4, 9, 16, 30}) {
+    const Mesh grid = make_grid(w, w);
+    const VertexStreamStats stats = run_on_fifo("grid", grid, static_cast<unsigned>(w + 2), static_cast<unsigned>(w + 2));
+    EXPECT_EQ(stats.misses, grid.vertex_count()) << w << "x" << w;
+  }
+}
+
+TEST(GridOrders, DegeneratesOnlyInTheIndexStream) {
+  const Mesh grid = make_grid(16, 16);
+  ReorderParams params;
+  params.cache_size = 12;
+  const Ordering ordering = reorder_grid(grid, params);
+  EXPECT_EQ(ordering.face_order.size(), 512u);
+  // Two columns (10 and 6 quads), each with a prefetch row: 16 degenerate triangles.
+  EXPECT_EQ(ordering.indices.size(), 3u * (512u + 16u));
+  const VertexStreamStats stats = simulate_vertex_stream(ordering.indices, ordering.type, VertexCachePolicy::Fifo, 12);
+  EXPECT_EQ(stats.degenerate, 16u);
+}
+
+// Castano's rows for the other methods; ours may be at most 10% above them.
+TEST(GridOrders, BaselinesWithinTenPercentOfCastano) {
+  const Mesh grid = make_grid(16, 16);
+  struct Published {
+    const char* algo;
+    double acmr20, acmr16, acmr12;
+  };
+  const Published rows[] = {
+      {"morton", 0.719, 0.750, 0.812}, {"hilbert", 0.699, 0.754, 0.797}, {"kcache", 0.711, 0.766, 0.807},
+      {"forsyth", 0.666, 0.699, 0.859}, {"tipsy", 0.658, 0.711, 0.758},
+  };
+  for (const Published& row : rows) {
+    bool registered = false;
+    for (const ReorderAlgorithm& algorithm : reorder_algorithms()) registered |= algorithm.name == row.algo;
+    if (!registered) continue;
+    EXPECT_LE(run_on_fifo(row.algo, grid, 20, 20).acmr(), row.acmr20 * 1.10) << row.algo << " FIFO 20";
+    EXPECT_LE(run_on_fifo(row.algo, grid, 16, 16).acmr(), row.acmr16 * 1.10) << row.algo << " FIFO 16";
+    EXPECT_LE(run_on_fifo(row.algo, grid, 12, 12).acmr(), row.acmr12 * 1.10) << row.algo << " FIFO 12";
+  }
+}
+
+TEST(GridOrders, GridOrderRejectsMeshesThatAreNotGrids) {
+  Mesh mesh = make_grid(4, 4);
+  mesh.grid.reset();
+  EXPECT_THROW(reorder_grid(mesh, ReorderParams{}), InputError);
+  EXPECT_FALSE(reorder_algorithm_applies(find_reorder_algorithm("grid"), mesh));
+  Mesh edited = make_grid(4, 4);
+  std::swap(edited.indices[0], edited.indices[1]);
+  EXPECT_THROW(reorder_grid(edited, ReorderParams{}), InputError);
+}
+
+TEST(GridOrders, ScanlineOnNonGridSweepsRows) {
+  // The same grid without its grid tag goes through the centroid sweep: same order.
+  Mesh mesh = make_grid(8, 8);
+  mesh.grid.reset();
+  const Ordering ordering = reorder_scanline(mesh, ReorderParams{});
+  for (std::uint32_t i = 0; i < ordering.face_order.size(); ++i) EXPECT_EQ(ordering.face_order[i], i);
+}
+
+}  // namespace
+}  // namespace rastrace
