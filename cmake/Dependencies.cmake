@@ -1,6 +1,15 @@
 # Every dependency is a Debian package installed by scripts/setup.sh.
 find_package(glm REQUIRED CONFIG)
 find_package(OpenImageIO REQUIRED CONFIG)
+# Debian's OpenImageIO config names /usr/include/opencv4 although libopencv-dev is not needed
+# (nor installed): drop the dangling include path so that linking the target works.
+foreach(property INTERFACE_INCLUDE_DIRECTORIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES)
+  get_target_property(dirs OpenImageIO::OpenImageIO ${property})
+  if(dirs)
+    list(FILTER dirs EXCLUDE REGEX "opencv")
+    set_target_properties(OpenImageIO::OpenImageIO PROPERTIES ${property} "${dirs}")
+  endif()
+endforeach()
 find_package(assimp REQUIRED CONFIG)
 find_package(zstd REQUIRED CONFIG)
 find_package(CLI11 REQUIRED CONFIG)

@@ -1,0 +1,237 @@
+#include "pipeline/pipeline.h"
+
+#include <algorithm>
+#include <string>
+
+#include "core/error.h"
+
+namespace rastrace {
+
+CullMode parse_cull_mode(const std::string& text) {
+  if (text == "none") return CullMode::None;
+  if (text == "back") return CullMode::Back;
+  if (text == "front") return CullMode::Front;
+  throw InputError("unknown cull mode '" + text + "': expected none, back or front");
+}
+
+namespace {
+constexpr std::size_t kFetchBatch = 1024;
+}
+
+Pipeline::Pipeline(Framebuffer& framebuffer, const PipelineOptions& options, EventSink* sink)
+    : framebuffer_(framebuffer),
+      options_(options),
+      sink_(sink),
+      rasterizer_(framebuffer, options.raster, sink),
+      clipper_(framebuffer.width(), framebuffer.height(), options.guard_band),
+      cache_(options.cache_policy, options.cache_entries) {
+  fetch_buffer_.reserve(kFetchBatch);
+}
+
+void Pipeline::set_camera(const glm::mat4& view, const glm::mat4& projection) {
+  view_ = view;
+  projection_ = projection;
+}
+
+void Pipeline::flush_fetches() {
+  if (sink_ && !fetch_buffer_.empty()) sink_->vertex_fetches(fetch_buffer_);
+  fetch_buffer_.clear();
+}
+
+void Pipeline::draw(const Mesh& mesh, const glm::mat4& model, const DrawCall& call, std::span<const Texture> textures) {
+  const std::uint32_t draw = draw_number_++;
+  ++stats_.draws;
+  shader_ = VertexShader(view_ * model, projection_, options_.lighting);
+  cache_.clear();
+  const std::size_t vertex_count = mesh.vertex_count();
+  if (shaded_.size() < vertex_count) shaded_.resize(vertex_count);
+  const bool has_normals = mesh.normals.size() == vertex_count;
+  const bool has_uvs = mesh.uvs.size() == vertex_count;
+  static const Material kWhite;
+
+  // Per-material state resolved once per draw, not per triangle.
+  const std::size_t material_count = std::max<std::size_t>(mesh.materials.size(), 1);
+  std::vector<TriangleState> states(material_count);
+  for (std::size_t m = 0; m < mesh.materials.size(); ++m) {
+    const int texture = mesh.materials[m].texture;
+    if (texture < 0) continue;
+    if (static_cast<std::size_t>(texture) >= textures.size() || textures[static_cast<std::size_t>(texture)].levels.empty())
+      throw InputError(mesh.name + ": material " + std::to_string(m) + " uses texture " + std::to_string(texture) +
+                       " but " + std::to_string(textures.size()) + " textures are loaded");
+    if (has_uvs) {
+      states[m].texture = &textures[static_cast<std::size_t>(texture)];
+      states[m].texture_id = static_cast<std::uint32_t>(texture);
+    }
+  }
+  auto material_of = [&](std::uint32_t primitive) -> std::uint32_t {
+    const std::uint32_t m = call.primitive_materials.empty()
+                                ? call.material
+                                : (primitive < call.primitive_materials.size() ? call.primitive_materials[primitive] : 0u);
+    if (m >= material_count)
+      throw InputError(mesh.name + ": primitive " + std::to_string(primitive) + " uses material " + std::to_string(m) +
+                       " but the mesh has " + std::to_string(mesh.materials.size()));
+    return m;
+  };
+
+  if (sink_) {
+    DrawInfo info;
+    info.draw = draw;
+    info.type = call.type;
+    info.restart_index = call.restart_index;
+    sink_->begin_draw(info);
+  }
+
+  auto fetch = [&](std::size_t position, bool primitive_start) {
+    const std::uint32_t v = call.indices[position];
+    if (v >= vertex_count)
+      throw InputError(mesh.name + ": draw " + std::to_string(draw) + ", index " + std::to_string(position) + ": vertex " +
+                       std::to_string(v) + " >= vertex count " + std::to_string(vertex_count));
+    ++stats_.lookups;
+    if (sink_) {
+      fetch_buffer_.push_back(VertexFetch{v, primitive_start});
+      if (fetch_buffer_.size() == kFetchBatch) flush_fetches();
+    }
+    if (!cache_.access(v)) {
+      ++stats_.vertices_shaded;
+      shaded_[v] = shader_.shade(mesh.positions[v], has_normals ? &mesh.normals[v] : nullptr,
+                                 has_uvs ? &mesh.uvs[v] : nullptr);
+    }
+  };
+
+  std::uint32_t primitive = 0;
+  auto assemble = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::span<const std::uint32_t> indices) {
+    const bool degenerate = a == b || b == c || a == c;
+    ++stats_.primitives;
+    const std::uint32_t number = primitive++;
+    const std::uint32_t material = material_of(number);
+    if (hook_) {
+      AssembledPrimitive p;
+      p.draw = draw;
+      p.primitive = number;
+      p.triangle = triangle_number_;
+      p.degenerate = degenerate;
+      p.triangle_indices = {a, b, c};
+      p.indices = indices;
+      p.shaded = std::span<const ShadedVertex>(shaded_.data(), vertex_count);
+      hook_->primitive(p);
+    }
+    if (degenerate) {
+      ++stats_.degenerate;
+      return;
+    }
+    ++stats_.triangles;
+    TriangleState state = states[material];
+    state.triangle = triangle_number_++;
+    triangle(mesh, a, b, c, material < mesh.materials.size() ? mesh.materials[material] : kWhite, state);
+  };
+
+  const std::span<const std::uint32_t> idx = call.indices;
+  switch (call.type) {
+    case PrimitiveType::TriangleList:
+      // GL ignores a trailing incomplete primitive; so do we (its indices are not fetched).
+      for (std::size_t i = 0; i + 2 < idx.size(); i += 3) {
+        fetch(i, true);
+        fetch(i + 1, false);
+        fetch(i + 2, false);
+        assemble(idx[i], idx[i + 1], idx[i + 2], idx.subspan(i, 3));
+      }
+      break;
+    case PrimitiveType::TriangleListAdjacency:
+      for (std::size_t i = 0; i + 5 < idx.size(); i += 6) {
+        for (std::size_t j = 0; j < 6; ++j) fetch(i + j, j == 0);
+        assemble(idx[i], idx[i + 2], idx[i + 4], idx.subspan(i, 6));
+      }
+      break;
+    case PrimitiveType::TriangleStrip: {
+      std::size_t in_strip = 0;
+      for (std::size_t i = 0; i < idx.size(); ++i) {
+        if (idx[i] == call.restart_index) {
+          in_strip = 0;
+          continue;
+        }
+        fetch(i, in_strip == 0);
+        if (++in_strip >= 3) {
+          // GL: triangle k of a strip is (v[k], v[k+1], v[k+2]) for even k, (v[k+1], v[k], v[k+2]) for odd k.
+          if ((in_strip - 3) % 2 == 1) assemble(idx[i - 1], idx[i - 2], idx[i], idx.subspan(i - 2, 3));
+          else assemble(idx[i - 2], idx[i - 1], idx[i], idx.subspan(i - 2, 3));
+        }
+      }
+      break;
+    }
+  }
+
+  flush_fetches();
+  rasterizer_.flush();
+  if (sink_) sink_->end_draw();
+}
+
+void Pipeline::triangle(const Mesh& /*mesh*/, std::uint32_t a, std::uint32_t b, std::uint32_t c,
+                        const Material& material, const TriangleState& state) {
+  ClipVertex v[3];
+  const std::uint32_t ids[3] = {a, b, c};
+  for (int i = 0; i < 3; ++i) {
+    const ShadedVertex& s = shaded_[ids[i]];
+    v[i].position = s.clip;
+    v[i].uv = s.uv;
+    v[i].colour = glm::vec4(glm::clamp(glm::vec3(material.diffuse) * s.light, 0.0f, 1.0f),
+                            glm::clamp(material.diffuse.a, 0.0f, 1.0f));
+  }
+  const std::uint32_t c0 = clipper_.outcode(v[0].position), c1 = clipper_.outcode(v[1].position),
+                      c2 = clipper_.outcode(v[2].position);
+  if (c0 & c1 & c2) {
+    ++stats_.outside;
+    return;
+  }
+  ClipPolygon polygon;
+  if (c0 | c1 | c2) {
+    ++stats_.clipped;
+    clipper_.clip(v[0], v[1], v[2], c0 | c1 | c2, polygon);
+  } else {
+    polygon.vertices[0] = v[0];
+    polygon.vertices[1] = v[1];
+    polygon.vertices[2] = v[2];
+    polygon.count = 3;
+  }
+  if (polygon.count < 3) return;
+
+  const float half_w = 0.5f * static_cast<float>(framebuffer_.width());
+  const float half_h = 0.5f * static_cast<float>(framebuffer_.height());
+  RasterVertex r[9];
+  for (int i = 0; i < polygon.count; ++i) {
+    const ClipVertex& p = polygon.vertices[static_cast<std::size_t>(i)];
+    if (!(p.position.w > 0.0f)) return;  // only a triangle through the eye itself; nothing visible
+    const float inv_w = 1.0f / p.position.w;
+    RasterVertex& out = r[i];
+    out.x = (p.position.x * inv_w + 1.0f) * half_w;
+    out.y = (1.0f - p.position.y * inv_w) * half_h;
+    out.z = 0.5f * (p.position.z * inv_w + 1.0f);
+    out.inv_w = inv_w;
+    out.colour = p.colour;
+    out.uv = p.uv;
+  }
+  // Facing from the whole polygon's signed area (image y points down: positive = counter-
+  // clockwise in GL window space = front).
+  float area = 0.0f;
+  for (int i = 0; i < polygon.count; ++i) {
+    const RasterVertex& p = r[i];
+    const RasterVertex& q = r[(i + 1) % polygon.count];
+    area += p.x * q.y - q.x * p.y;
+  }
+  const bool front = area > 0.0f;
+  if ((options_.cull == CullMode::Back && !front) || (options_.cull == CullMode::Front && front)) {
+    ++stats_.culled;
+    return;
+  }
+  for (int i = 1; i + 1 < polygon.count; ++i) {
+    ++stats_.rasterized;
+    rasterizer_.draw(r[0], r[i], r[i + 1], state);
+  }
+}
+
+void Pipeline::finish() {
+  flush_fetches();
+  rasterizer_.flush();
+  if (sink_) sink_->finish();
+}
+
+}  // namespace rastrace

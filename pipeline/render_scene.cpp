@@ -1,0 +1,38 @@
+#include "pipeline/render_scene.h"
+
+#include <glm/ext/matrix_clip_space.hpp>
+#include <glm/ext/matrix_transform.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace rastrace {
+
+CameraMatrices camera_matrices(const Scene& scene) {
+  CameraMatrices m;
+  const Camera& camera = scene.camera;
+  m.view = glm::lookAt(camera.eye, camera.target, camera.up);
+  m.projection = glm::perspective(glm::radians(camera.fov_y_degrees),
+                                  static_cast<float>(scene.width) / static_cast<float>(scene.height),
+                                  camera.near_plane, camera.far_plane);
+  return m;
+}
+
+RenderResult render_scene(const Scene& scene, const RenderOptions& options, EventSink* sink) {
+  RenderResult result{Framebuffer(scene.width, scene.height, options.debug_planes), {}, {}};
+  result.framebuffer.clear(options.clear_colour.value_or(scene.background));
+  Pipeline pipeline(result.framebuffer, options.pipeline, sink);
+  const CameraMatrices camera = camera_matrices(scene);
+  pipeline.set_camera(camera.view, camera.projection);
+  for (const SceneObject& object : scene.objects) {
+    DrawCall call;
+    call.indices = object.mesh.indices;
+    call.type = PrimitiveType::TriangleList;
+    call.primitive_materials = object.mesh.face_material;
+    pipeline.draw(object.mesh, object.transform, call, scene.textures);
+  }
+  pipeline.finish();
+  result.pipeline = pipeline.stats();
+  result.raster = pipeline.raster_stats();
+  return result;
+}
+
+}  // namespace rastrace

@@ -1,0 +1,40 @@
+// Renders a whole Scene into a framebuffer: one draw per object (its triangle list in file order,
+// per-face materials), with the scene's camera. The reference renderer uses the same matrices
+// (camera_matrices) so that both draw exactly the same frame.
+#pragma once
+
+#include <optional>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+#include "pipeline/pipeline.h"
+#include "raster/framebuffer.h"
+#include "scenes/scene.h"
+#include "traces/sink.h"
+
+namespace rastrace {
+
+struct CameraMatrices {
+  glm::mat4 view{1.0f};
+  glm::mat4 projection{1.0f};  // GL clip space: z in [-w, w]
+};
+// lookAt(eye, target, up) and perspective(fov_y, width / height, near, far), as glFrustum.
+CameraMatrices camera_matrices(const Scene& scene);
+
+struct RenderOptions {
+  PipelineOptions pipeline;
+  bool debug_planes = false;                // write counts and centre-on-edge flags
+  std::optional<glm::vec4> clear_colour;    // default: the scene's background
+};
+
+struct RenderResult {
+  Framebuffer framebuffer;
+  PipelineStats pipeline;
+  RasterStats raster;
+};
+
+// Throws InputError for an invalid scene (indices, materials, textures out of range).
+RenderResult render_scene(const Scene& scene, const RenderOptions& options, EventSink* sink);
+
+}  // namespace rastrace

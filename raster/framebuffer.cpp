@@ -1,0 +1,79 @@
+#include "raster/framebuffer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+
+#include <OpenImageIO/imageio.h>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+
+namespace rastrace {
+
+Framebuffer::Framebuffer(int width, int height, bool debug_planes) : width_(width), height_(height) {
+  if (width < 1 || height < 1 || width > 16384 || height > 16384)
+    throw InputError("image size " + std::to_string(width) + "x" + std::to_string(height) +
+                     ": expected 1..16384 pixels on each side");
+  const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  colour_.resize(pixels * 4);
+  depth_.resize(pixels);
+  if (debug_planes) {
+    write_count_.resize(pixels);
+    centre_on_edge_.resize(pixels);
+  }
+  clear(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+}
+
+void Framebuffer::clear(const glm::vec4& colour, float depth) {
+  std::uint8_t c[4];
+  for (int i = 0; i < 4; ++i)
+    c[i] = static_cast<std::uint8_t>(std::lround(std::clamp(colour[i], 0.0f, 1.0f) * 255.0f));
+  for (std::size_t i = 0; i < colour_.size(); i += 4) std::copy(c, c + 4, colour_.begin() + static_cast<std::ptrdiff_t>(i));
+  std::fill(depth_.begin(), depth_.end(), depth);
+  std::fill(write_count_.begin(), write_count_.end(), std::uint16_t{0});
+  std::fill(centre_on_edge_.begin(), centre_on_edge_.end(), std::uint8_t{0});
+}
+
+namespace {
+
+void write_image(const std::string& path, const OIIO::ImageSpec& spec, const void* pixels) {
+  write_via_temporary(path, [&](const std::filesystem::path& temporary) {
+    // The temporary's name ends in ".tmp.<pid>": tell OpenImageIO the real format by extension.
+    std::string format = std::filesystem::path(path).extension().string();
+    if (!format.empty()) format.erase(0, 1);
+    auto out = OIIO::ImageOutput::create(format.empty() ? std::string("png") : format);
+    if (!out) throw InputError(path + ": cannot write images of this type (" + OIIO::geterror() + ")");
+    if (!out->open(temporary.string(), spec) || !out->write_image(spec.format, pixels) || !out->close())
+      throw InputError(path + ": " + out->geterror());
+  });
+}
+
+}  // namespace
+
+void write_rgba8_image(const std::string& path, int width, int height, const std::uint8_t* rgba, int channels) {
+  if (channels == 4) {
+    write_image(path, OIIO::ImageSpec(width, height, 4, OIIO::TypeDesc::UINT8), rgba);
+    return;
+  }
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
+  for (std::size_t i = 0, j = 0; j < rgb.size(); i += 4, j += 3) {
+    rgb[j] = rgba[i];
+    rgb[j + 1] = rgba[i + 1];
+    rgb[j + 2] = rgba[i + 2];
+  }
+  write_image(path, OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8), rgb.data());
+}
+
+void Framebuffer::write_colour(const std::string& path, bool alpha) const {
+  write_rgba8_image(path, width_, height_, colour_.data(), alpha ? 4 : 3);
+}
+
+void Framebuffer::write_depth(const std::string& path) const {
+  OIIO::ImageSpec spec(width_, height_, 1, OIIO::TypeDesc::FLOAT);
+  spec.channelnames = {"Z"};
+  write_image(path, spec, depth_.data());
+}
+
+}  // namespace rastrace

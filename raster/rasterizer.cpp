@@ -1,0 +1,257 @@
+#include "raster/rasterizer.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+
+namespace rastrace {
+
+Traversal parse_traversal(const std::string& text) {
+  if (text == "scanline") return Traversal::Scanline;
+  if (text == "tiled8" || text == "tiled") return Traversal::Tiled8;
+  throw InputError("unknown traversal order '" + text + "': expected scanline or tiled8");
+}
+
+const char* to_string(Traversal traversal) { return traversal == Traversal::Scanline ? "scanline" : "tiled8"; }
+
+namespace {
+
+constexpr int kSubpixelBits = 8;
+constexpr std::int64_t kOne = std::int64_t{1} << kSubpixelBits;  // one pixel in fixed point
+constexpr std::int64_t kHalf = kOne / 2;                         // pixel centres
+constexpr int kAttributes = 8;  // q = 1/w, s*q, t*q, r*q, g*q, b*q, a*q, z
+constexpr int kTile = 8;
+
+inline std::int64_t to_fixed(float v) { return static_cast<std::int64_t>(std::llround(static_cast<double>(v) * kOne)); }
+
+inline int floor_div(std::int64_t a, std::int64_t b) {
+  std::int64_t q = a / b;
+  if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
+  return static_cast<int>(q);
+}
+
+}  // namespace
+
+struct Rasterizer::Setup {
+  std::int64_t step_x[3], step_y[3];  // edge function change per pixel to the right / down
+  std::int64_t bias[3];               // 0 for owned (top or left) edges, -1 for the others
+  std::int64_t origin[3];             // edge functions at the centre of pixel (x0, y0)
+  int x0, y0, x1, y1;                 // pixels to visit (x0, y0 even), inclusive, in the image
+  float inv_area;
+  float base[kAttributes], d1[kAttributes], d2[kAttributes];
+};
+
+Rasterizer::Rasterizer(Framebuffer& framebuffer, const RasterOptions& options, EventSink* sink)
+    : framebuffer_(framebuffer), options_(options), recorder_(sink) {}
+
+void Rasterizer::draw(const RasterVertex& va, const RasterVertex& vb, const RasterVertex& vc,
+                      const TriangleState& state) {
+  const RasterVertex* v[3] = {&va, &vb, &vc};
+  std::int64_t X[3], Y[3];
+  for (int i = 0; i < 3; ++i) {
+    if (!std::isfinite(v[i]->x) || !std::isfinite(v[i]->y) || std::fabs(v[i]->x) > 4194304.0f ||
+        std::fabs(v[i]->y) > 4194304.0f)
+      return;  // outside the fixed-point range: the pipeline's clipping never sends these
+    X[i] = to_fixed(v[i]->x);
+    Y[i] = to_fixed(v[i]->y);
+  }
+  std::int64_t area = (X[1] - X[0]) * (Y[2] - Y[0]) - (Y[1] - Y[0]) * (X[2] - X[0]);
+  if (area == 0) return;
+  if (area < 0) {  // make the winding positive so that "inside" is E >= 0 on all three edges
+    std::swap(v[1], v[2]);
+    std::swap(X[1], X[2]);
+    std::swap(Y[1], Y[2]);
+    area = -area;
+  }
+
+  Setup s;
+  int min_x = floor_div(std::min({X[0], X[1], X[2]}) - kHalf + kOne - 1, kOne);  // ceil
+  int min_y = floor_div(std::min({Y[0], Y[1], Y[2]}) - kHalf + kOne - 1, kOne);
+  int max_x = floor_div(std::max({X[0], X[1], X[2]}) - kHalf, kOne);
+  int max_y = floor_div(std::max({Y[0], Y[1], Y[2]}) - kHalf, kOne);
+  min_x = std::max(min_x, 0);
+  min_y = std::max(min_y, 0);
+  max_x = std::min(max_x, framebuffer_.width() - 1);
+  max_y = std::min(max_y, framebuffer_.height() - 1);
+  if (min_x > max_x || min_y > max_y) return;
+  const int align = options_.traversal == Traversal::Tiled8 ? kTile : 2;
+  s.x0 = min_x - min_x % align;
+  s.y0 = min_y - min_y % align;
+  s.x1 = max_x;
+  s.y1 = max_y;
+
+  // Edge k is the one opposite vertex k, from vertex k+1 to vertex k+2; its function is
+  // 2 * area * (barycentric weight of vertex k).
+  const std::int64_t px = static_cast<std::int64_t>(s.x0) * kOne + kHalf;
+  const std::int64_t py = static_cast<std::int64_t>(s.y0) * kOne + kHalf;
+  for (int k = 0; k < 3; ++k) {
+    const int from = (k + 1) % 3, to = (k + 2) % 3;
+    const std::int64_t dx = X[to] - X[from], dy = Y[to] - Y[from];
+    s.step_x[k] = -dy * kOne;
+    s.step_y[k] = dx * kOne;
+    s.origin[k] = -dy * (px - X[from]) + dx * (py - Y[from]);
+    const bool top = dy == 0 && dx > 0;
+    const bool left = dy < 0;
+    s.bias[k] = (top || left) ? 0 : -1;
+  }
+  s.inv_area = static_cast<float>(1.0 / static_cast<double>(area));
+
+  float attr[3][kAttributes];
+  for (int i = 0; i < 3; ++i) {
+    const float q = v[i]->inv_w;
+    attr[i][0] = q;
+    attr[i][1] = v[i]->uv.x * q;
+    attr[i][2] = v[i]->uv.y * q;
+    attr[i][3] = v[i]->colour.r * q;
+    attr[i][4] = v[i]->colour.g * q;
+    attr[i][5] = v[i]->colour.b * q;
+    attr[i][6] = v[i]->colour.a * q;
+    attr[i][7] = v[i]->z;
+  }
+  for (int j = 0; j < kAttributes; ++j) {
+    s.base[j] = attr[0][j];
+    s.d1[j] = attr[1][j] - attr[0][j];
+    s.d2[j] = attr[2][j] - attr[0][j];
+  }
+
+  ++stats_.triangles;
+  const bool textured = state.texture != nullptr && !state.texture->levels.empty();
+  const bool debug = framebuffer_.has_debug_planes();
+  if (textured) {
+    if (debug) traverse<true, true>(s, state);
+    else traverse<true, false>(s, state);
+  } else {
+    if (debug) traverse<false, true>(s, state);
+    else traverse<false, false>(s, state);
+  }
+}
+
+template <bool kTextured, bool kDebug>
+void Rasterizer::traverse(const Setup& s, const TriangleState& state) {
+  const int width = framebuffer_.width(), height = framebuffer_.height();
+  std::uint8_t* colour = framebuffer_.colour();
+  float* depth = framebuffer_.depth();
+  const SamplerState sampler = options_.sampler;
+  const Texture* texture = state.texture;
+  const int tex_w = kTextured ? texture->levels[0].width : 1;
+  const int tex_h = kTextured ? texture->levels[0].height : 1;
+  TexelSite site;
+  site.texture = state.texture_id;
+  site.triangle = state.triangle;
+
+  // Pixels of a quad: 0 top-left, 1 top-right, 2 bottom-left, 3 bottom-right.
+  auto quad = [&](int qx, int qy, const std::int64_t* e) {
+    unsigned mask = 0;
+    std::int64_t pe[3][4];
+    for (int k = 0; k < 3; ++k) {
+      pe[k][0] = e[k];
+      pe[k][1] = e[k] + s.step_x[k];
+      pe[k][2] = e[k] + s.step_y[k];
+      pe[k][3] = e[k] + s.step_x[k] + s.step_y[k];
+    }
+    for (int i = 0; i < 4; ++i) {
+      const bool inside = (pe[0][i] + s.bias[0] >= 0) & (pe[1][i] + s.bias[1] >= 0) & (pe[2][i] + s.bias[2] >= 0);
+      mask |= static_cast<unsigned>(inside) << i;
+    }
+    if (qx + 1 >= width) mask &= ~0xAu;
+    if (qy + 1 >= height) mask &= ~0xCu;
+    if constexpr (kDebug) {
+      for (int i = 0; i < 4; ++i) {
+        const int x = qx + (i & 1), y = qy + (i >> 1);
+        if (x >= width || y >= height) continue;
+        const bool closed = pe[0][i] >= 0 && pe[1][i] >= 0 && pe[2][i] >= 0;
+        if (closed && (pe[0][i] == 0 || pe[1][i] == 0 || pe[2][i] == 0))
+          framebuffer_.centre_on_edge()[static_cast<std::size_t>(y) * width + x] = 1;
+      }
+    }
+    if (!mask) return;
+    ++stats_.quads;
+
+    float a[4][kAttributes];
+    for (int i = 0; i < 4; ++i) {
+      const float l1 = static_cast<float>(pe[1][i]) * s.inv_area;
+      const float l2 = static_cast<float>(pe[2][i]) * s.inv_area;
+      for (int j = 0; j < kAttributes; ++j) a[i][j] = s.base[j] + l1 * s.d1[j] + l2 * s.d2[j];
+    }
+    unsigned pass = 0;
+    for (int i = 0; i < 4; ++i) {
+      if (!(mask >> i & 1u)) continue;
+      ++stats_.fragments;
+      const std::size_t p = static_cast<std::size_t>(qy + (i >> 1)) * width + static_cast<std::size_t>(qx + (i & 1));
+      if (a[i][7] < depth[p]) pass |= 1u << i;
+    }
+    if (!pass) return;
+
+    float u[4], v[4];
+    float lambda = 0.0f;
+    if constexpr (kTextured) {
+      for (int i = 0; i < 4; ++i) {
+        const float w = 1.0f / a[i][0];
+        u[i] = a[i][1] * w;
+        v[i] = a[i][2] * w;
+      }
+      lambda = compute_lod(sampler, tex_w, tex_h, u[1] - u[0], v[1] - v[0], u[2] - u[0], v[2] - v[0]);
+    }
+    for (int i = 0; i < 4; ++i) {
+      if (!(pass >> i & 1u)) continue;
+      ++stats_.fragments_passed;
+      const int x = qx + (i & 1), y = qy + (i >> 1);
+      const std::size_t p = static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x);
+      const float w = 1.0f / a[i][0];
+      glm::vec4 c(a[i][3] * w, a[i][4] * w, a[i][5] * w, a[i][6] * w);
+      if constexpr (kTextured) {
+        site.pixel_x = static_cast<std::uint16_t>(x);
+        site.pixel_y = static_cast<std::uint16_t>(y);
+        c *= sample_texture(*texture, sampler, u[i], v[i], lambda, recorder_, site);
+      }
+      depth[p] = a[i][7];
+      std::uint8_t* out = colour + p * 4;
+      for (int ch = 0; ch < 4; ++ch)
+        out[ch] = static_cast<std::uint8_t>(std::clamp(c[ch], 0.0f, 1.0f) * 255.0f + 0.5f);
+      if constexpr (kDebug) ++framebuffer_.write_count()[p];
+    }
+  };
+
+  std::int64_t row[3];
+  if (options_.traversal == Traversal::Scanline) {
+    std::copy(s.origin, s.origin + 3, row);
+    for (int qy = s.y0; qy <= s.y1; qy += 2) {
+      std::int64_t e[3] = {row[0], row[1], row[2]};
+      for (int qx = s.x0; qx <= s.x1; qx += 2) {
+        quad(qx, qy, e);
+        for (int k = 0; k < 3; ++k) e[k] += 2 * s.step_x[k];
+      }
+      for (int k = 0; k < 3; ++k) row[k] += 2 * s.step_y[k];
+    }
+    return;
+  }
+  // Tiled: skip a tile when one edge function is negative at all its pixel centres; the
+  // maximum of a linear function over the tile is at the corner its gradient points to.
+  std::int64_t tile_max[3];
+  for (int k = 0; k < 3; ++k)
+    tile_max[k] = std::max<std::int64_t>(0, s.step_x[k]) * (kTile - 1) + std::max<std::int64_t>(0, s.step_y[k]) * (kTile - 1);
+  std::copy(s.origin, s.origin + 3, row);
+  for (int ty = s.y0; ty <= s.y1; ty += kTile) {
+    std::int64_t tile[3] = {row[0], row[1], row[2]};
+    for (int tx = s.x0; tx <= s.x1; tx += kTile) {
+      const bool outside = tile[0] + tile_max[0] + s.bias[0] < 0 || tile[1] + tile_max[1] + s.bias[1] < 0 ||
+                           tile[2] + tile_max[2] + s.bias[2] < 0;
+      if (!outside || kDebug) {
+        std::int64_t quad_row[3] = {tile[0], tile[1], tile[2]};
+        for (int qy = ty; qy < ty + kTile && qy <= s.y1; qy += 2) {
+          std::int64_t e[3] = {quad_row[0], quad_row[1], quad_row[2]};
+          for (int qx = tx; qx < tx + kTile && qx <= s.x1; qx += 2) {
+            quad(qx, qy, e);
+            for (int k = 0; k < 3; ++k) e[k] += 2 * s.step_x[k];
+          }
+          for (int k = 0; k < 3; ++k) quad_row[k] += 2 * s.step_y[k];
+        }
+      }
+      for (int k = 0; k < 3; ++k) tile[k] += kTile * s.step_x[k];
+    }
+    for (int k = 0; k < 3; ++k) row[k] += kTile * s.step_y[k];
+  }
+}
+
+}  // namespace rastrace

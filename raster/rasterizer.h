@@ -1,0 +1,98 @@
+// Triangle rasterization: fixed-point edge functions with 8 sub-pixel bits, a top-left fill rule,
+// 2x2 quads visited in scanline or 8x8-tiled order, perspective-correct interpolation, an
+// early depth test (GL_LESS), mipmapped texturing modulated by the vertex colour.
+//
+// Coordinates are image coordinates: x to the right, y down, row 0 at the top, pixel (x, y)
+// centred at (x + 1/2, y + 1/2). Vertices snap to 1/256 pixel (24.8 fixed point); the edge
+// functions are then exact 64-bit integers, so coverage never depends on rounding.
+//
+// Fill rule (D3D's and GL implementations' top-left rule): a pixel centre exactly on an edge
+// belongs to the triangle only if that edge is a *top* edge (horizontal, the triangle below it)
+// or a *left* edge (the triangle to its right). A centre on an edge shared by two triangles is
+// therefore drawn exactly once, and a centre on a shared vertex exactly once.
+//
+// Texel reads happen only for fragments that pass the depth test (early Z, as hardware does);
+// the level of detail is computed once per 2x2 quad from the quad's differences (right minus
+// left along the top row, bottom minus top along the left column), helper pixels included.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+
+#include "raster/framebuffer.h"
+#include "raster/sampler.h"
+#include "raster/texel_recorder.h"
+#include "traces/sink.h"
+
+namespace rastrace {
+
+enum class Traversal : std::uint8_t {
+  Scanline,  // quad rows top to bottom, left to right in each
+  Tiled8,    // 8x8-pixel tiles row-major over the bounding box, quads row-major inside a tile
+};
+// "scanline" or "tiled8" (alias "tiled"); throws InputError otherwise.
+Traversal parse_traversal(const std::string& text);
+const char* to_string(Traversal traversal);
+
+// A vertex after the perspective divide and the viewport transform.
+struct RasterVertex {
+  float x = 0.0f, y = 0.0f;  // image coordinates in pixels
+  float z = 0.0f;            // window depth in [0, 1]
+  float inv_w = 1.0f;        // 1 / clip-space w
+  glm::vec4 colour{1.0f};
+  glm::vec2 uv{0.0f};
+};
+
+// What a triangle is drawn with.
+struct TriangleState {
+  const Texture* texture = nullptr;  // nullptr: the vertex colour alone
+  std::uint32_t texture_id = 0;      // in TexelAccess events
+  std::uint32_t triangle = 0;        // the drawn triangle's number in the frame, in events
+};
+
+struct RasterOptions {
+  Traversal traversal = Traversal::Scanline;
+  SamplerState sampler;
+};
+
+struct RasterStats {
+  std::uint64_t triangles = 0;  // triangles set up with a non-zero area
+  std::uint64_t quads = 0;      // 2x2 quads with at least one covered pixel
+  std::uint64_t fragments = 0;  // covered pixels
+  std::uint64_t fragments_passed = 0;  // covered pixels that passed the depth test (written)
+  std::uint64_t texel_reads = 0;
+};
+
+class Rasterizer {
+ public:
+  // `sink` may be nullptr (no events); the framebuffer must outlive the rasterizer.
+  Rasterizer(Framebuffer& framebuffer, const RasterOptions& options, EventSink* sink);
+
+  // Any winding; zero-area triangles draw nothing. Vertices must lie within +-2^22 pixels
+  // (the pipeline's guard band keeps them far inside).
+  void draw(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c, const TriangleState& state);
+  // Hands buffered texel events to the sink (call at the end of a draw).
+  void flush() { recorder_.flush(); }
+
+  RasterStats stats() const {
+    RasterStats s = stats_;
+    s.texel_reads = recorder_.reads();
+    return s;
+  }
+  const RasterOptions& options() const { return options_; }
+
+ private:
+  struct Setup;
+  template <bool kTextured, bool kDebug>
+  void traverse(const Setup& setup, const TriangleState& state);
+
+  Framebuffer& framebuffer_;
+  RasterOptions options_;
+  TexelRecorder recorder_;
+  RasterStats stats_;
+};
+
+}  // namespace rastrace

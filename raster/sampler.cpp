@@ -1,0 +1,171 @@
+#include "raster/sampler.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+
+namespace rastrace {
+
+SamplerState parse_filter(const std::string& text, SamplerState base) {
+  struct Name {
+    const char* name;
+    TextureFilter min, mag;
+  };
+  static constexpr Name names[] = {
+      {"nearest", TextureFilter::Nearest, TextureFilter::Nearest},
+      {"linear", TextureFilter::Linear, TextureFilter::Linear},
+      {"nearest_mipmap_nearest", TextureFilter::NearestMipmapNearest, TextureFilter::Nearest},
+      {"linear_mipmap_nearest", TextureFilter::LinearMipmapNearest, TextureFilter::Linear},
+      {"linear_mipmap_linear", TextureFilter::LinearMipmapLinear, TextureFilter::Linear},
+      {"trilinear", TextureFilter::LinearMipmapLinear, TextureFilter::Linear},
+      {"bilinear", TextureFilter::LinearMipmapNearest, TextureFilter::Linear},
+  };
+  for (const Name& name : names) {
+    if (text == name.name) {
+      base.min_filter = name.min;
+      base.mag_filter = name.mag;
+      return base;
+    }
+  }
+  throw InputError("unknown texture filter '" + text +
+                   "': expected nearest, linear, nearest_mipmap_nearest, linear_mipmap_nearest, "
+                   "linear_mipmap_linear (trilinear)");
+}
+
+TextureWrap parse_wrap(const std::string& text) {
+  if (text == "repeat") return TextureWrap::Repeat;
+  if (text == "clamp_to_edge" || text == "clamp") return TextureWrap::ClampToEdge;
+  throw InputError("unknown texture wrap '" + text + "': expected repeat or clamp_to_edge");
+}
+
+const char* to_string(TextureFilter filter) {
+  switch (filter) {
+    case TextureFilter::Nearest: return "nearest";
+    case TextureFilter::Linear: return "linear";
+    case TextureFilter::NearestMipmapNearest: return "nearest_mipmap_nearest";
+    case TextureFilter::LinearMipmapNearest: return "linear_mipmap_nearest";
+    case TextureFilter::LinearMipmapLinear: return "linear_mipmap_linear";
+  }
+  return "?";
+}
+
+const char* to_string(TextureWrap wrap) { return wrap == TextureWrap::Repeat ? "repeat" : "clamp_to_edge"; }
+
+float compute_lod(const SamplerState& state, int width, int height, float dsdx, float dtdx, float dsdy,
+                  float dtdy) {
+  const float w = static_cast<float>(width), h = static_cast<float>(height);
+  const float dudx = dsdx * w, dvdx = dtdx * h, dudy = dsdy * w, dvdy = dtdy * h;
+  float rho;
+  if (state.lod == LodFormula::Lengths) {
+    rho = std::max(std::sqrt(dudx * dudx + dvdx * dvdx), std::sqrt(dudy * dudy + dvdy * dvdy));
+  } else {
+    rho = std::max(std::max(std::fabs(dudx), std::fabs(dudy)), std::max(std::fabs(dvdx), std::fabs(dvdy)));
+  }
+  // rho = 0 (a constant coordinate) is the deepest magnification; NaN from a degenerate quad too.
+  if (!(rho > 0.0f)) return -128.0f;
+  return std::log2(rho);
+}
+
+namespace {
+
+inline int wrap_coordinate(int i, int size, TextureWrap wrap) {
+  if (wrap == TextureWrap::Repeat) {
+    const int m = i % size;
+    return m < 0 ? m + size : m;
+  }
+  return std::clamp(i, 0, size - 1);
+}
+
+// floor() of a scaled coordinate as an int, safe for huge or non-finite coordinates: REPEAT
+// only needs the value modulo the size, and anything beyond +-2^24 has lost its fraction anyway.
+inline float safe_coordinate(float u) {
+  if (!std::isfinite(u)) return 0.0f;
+  return std::clamp(u, -16777216.0f, 16777216.0f);
+}
+
+inline glm::vec4 fetch(const Image& image, int x, int y) {
+  const std::uint8_t* p = image.texel(x, y);
+  constexpr float k = 1.0f / 255.0f;
+  return glm::vec4(p[0] * k, p[1] * k, p[2] * k, p[3] * k);
+}
+
+glm::vec4 sample_nearest(const Image& image, unsigned level, const SamplerState& state, float s, float t,
+                         TexelRecorder& recorder, const TexelSite& site) {
+  const float u = safe_coordinate(s * static_cast<float>(image.width));
+  const float v = safe_coordinate(t * static_cast<float>(image.height));
+  const int x = wrap_coordinate(static_cast<int>(std::floor(u)), image.width, state.wrap_s);
+  const int y = wrap_coordinate(static_cast<int>(std::floor(v)), image.height, state.wrap_t);
+  recorder.record(site, level, x, y);
+  return fetch(image, x, y);
+}
+
+glm::vec4 sample_linear(const Image& image, unsigned level, const SamplerState& state, float s, float t,
+                        TexelRecorder& recorder, const TexelSite& site) {
+  const float u = safe_coordinate(s * static_cast<float>(image.width) - 0.5f);
+  const float v = safe_coordinate(t * static_cast<float>(image.height) - 0.5f);
+  const float fu = std::floor(u), fv = std::floor(v);
+  const float a = u - fu, b = v - fv;
+  const int iu = static_cast<int>(fu), iv = static_cast<int>(fv);
+  const int x0 = wrap_coordinate(iu, image.width, state.wrap_s);
+  const int x1 = wrap_coordinate(iu + 1, image.width, state.wrap_s);
+  const int y0 = wrap_coordinate(iv, image.height, state.wrap_t);
+  const int y1 = wrap_coordinate(iv + 1, image.height, state.wrap_t);
+  recorder.record(site, level, x0, y0);
+  recorder.record(site, level, x1, y0);
+  recorder.record(site, level, x0, y1);
+  recorder.record(site, level, x1, y1);
+  const glm::vec4 t00 = fetch(image, x0, y0), t10 = fetch(image, x1, y0);
+  const glm::vec4 t01 = fetch(image, x0, y1), t11 = fetch(image, x1, y1);
+  const glm::vec4 top = t00 + (t10 - t00) * a;
+  const glm::vec4 bottom = t01 + (t11 - t01) * a;
+  return top + (bottom - top) * b;
+}
+
+inline glm::vec4 sample_level(const Texture& texture, unsigned level, TextureFilter filter,
+                              const SamplerState& state, float s, float t, TexelRecorder& recorder,
+                              const TexelSite& site) {
+  const Image& image = texture.levels[level];
+  return filter == TextureFilter::Nearest ? sample_nearest(image, level, state, s, t, recorder, site)
+                                          : sample_linear(image, level, state, s, t, recorder, site);
+}
+
+}  // namespace
+
+glm::vec4 sample_texture(const Texture& texture, const SamplerState& state, float s, float t, float lambda,
+                         TexelRecorder& recorder, const TexelSite& site) {
+  // Section 8.14: c = 0.5 only for a LINEAR magnification with a NEAREST_MIPMAP_* minification.
+  const float c = (state.mag_filter == TextureFilter::Linear &&
+                   state.min_filter == TextureFilter::NearestMipmapNearest)
+                      ? 0.5f
+                      : 0.0f;
+  if (lambda <= c) return sample_level(texture, 0, state.mag_filter, state, s, t, recorder, site);
+
+  const unsigned q = static_cast<unsigned>(texture.levels.size()) - 1;  // the last level
+  switch (state.min_filter) {
+    case TextureFilter::Nearest:
+    case TextureFilter::Linear:
+      return sample_level(texture, 0, state.min_filter, state, s, t, recorder, site);
+    case TextureFilter::NearestMipmapNearest:
+    case TextureFilter::LinearMipmapNearest: {
+      // Equation 8.10: d = ceil(lambda + 1/2) - 1 for lambda > 1/2, else the base level.
+      unsigned d = 0;
+      if (lambda > 0.5f) d = static_cast<unsigned>(std::min(std::ceil(lambda + 0.5f) - 1.0f, static_cast<float>(q)));
+      const TextureFilter filter = state.min_filter == TextureFilter::NearestMipmapNearest ? TextureFilter::Nearest
+                                                                                             : TextureFilter::Linear;
+      return sample_level(texture, d, filter, state, s, t, recorder, site);
+    }
+    case TextureFilter::LinearMipmapLinear: {
+      if (lambda >= static_cast<float>(q)) return sample_level(texture, q, TextureFilter::Linear, state, s, t, recorder, site);
+      const float floor_lambda = std::floor(lambda);
+      const unsigned d1 = static_cast<unsigned>(floor_lambda);
+      const float f = lambda - floor_lambda;
+      const glm::vec4 t1 = sample_level(texture, d1, TextureFilter::Linear, state, s, t, recorder, site);
+      const glm::vec4 t2 = sample_level(texture, d1 + 1, TextureFilter::Linear, state, s, t, recorder, site);
+      return t1 + (t2 - t1) * f;
+    }
+  }
+  return glm::vec4(0.0f);
+}
+
+}  // namespace rastrace

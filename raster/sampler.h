@@ -1,0 +1,65 @@
+// Mipmapped texture sampling as the OpenGL 4.6 specification defines it (section 8.14):
+// the level of detail from the derivatives of the texture coordinates, level selection, and
+// the NEAREST / LINEAR filters with REPEAT or CLAMP_TO_EDGE wrapping. Every texel read is
+// reported to a TexelRecorder, so a trilinear sample reports exactly 8 reads.
+//
+// Results are RGBA in [0, 1] computed in float from 8-bit texels (as softpipe does; llvmpipe
+// filters 8-bit textures in 8.8 fixed point, so the two drivers differ by up to 1/255 here).
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include <glm/vec4.hpp>
+
+#include "raster/texel_recorder.h"
+#include "scenes/texture.h"
+
+namespace rastrace {
+
+enum class TextureFilter : std::uint8_t {
+  Nearest,
+  Linear,
+  NearestMipmapNearest,
+  LinearMipmapNearest,
+  LinearMipmapLinear,  // trilinear: 8 texel reads
+};
+enum class TextureWrap : std::uint8_t { Repeat, ClampToEdge };
+
+// How rho (the scale factor of equation 8.6) is computed from the four derivatives.
+enum class LodFormula : std::uint8_t {
+  // Equation 8.6: rho = max(length(du/dx, dv/dx), length(du/dy, dv/dy)). The default.
+  Lengths,
+  // The bound that equation 8.7 allows: rho = max(|du/dx|, |du/dy|, |dv/dx|, |dv/dy|).
+  // softpipe computes exactly this, so the cross-check can match it texel for texel.
+  MaxComponent,
+};
+
+struct SamplerState {
+  TextureFilter min_filter = TextureFilter::LinearMipmapLinear;
+  TextureFilter mag_filter = TextureFilter::Linear;  // Nearest or Linear only
+  TextureWrap wrap_s = TextureWrap::Repeat;
+  TextureWrap wrap_t = TextureWrap::Repeat;
+  LodFormula lod = LodFormula::Lengths;
+};
+
+// Command-line names: nearest, linear, nearest_mipmap_nearest, linear_mipmap_nearest,
+// linear_mipmap_linear (alias trilinear); repeat, clamp_to_edge. Throw InputError otherwise.
+// The magnification filter follows: NEAREST for the NEAREST* minification filters, else LINEAR.
+SamplerState parse_filter(const std::string& text, SamplerState base = {});
+TextureWrap parse_wrap(const std::string& text);
+const char* to_string(TextureFilter filter);
+const char* to_string(TextureWrap wrap);
+
+// lambda = log2(rho) for one 2x2 quad. Derivatives are in normalised coordinates (s, t) per pixel;
+// the level-0 size scales them to texels. Returns -inf-safe values (rho = 0 gives -128).
+float compute_lod(const SamplerState& state, int width, int height, float dsdx, float dtdx,
+                  float dsdy, float dtdy);
+
+// Samples `texture` at (s, t) with level of detail lambda, recording every texel read.
+// `texture_id` and the pixel and triangle in `site` go into the TexelAccess events.
+glm::vec4 sample_texture(const Texture& texture, const SamplerState& state, float s, float t, float lambda,
+                         TexelRecorder& recorder, const TexelSite& site);
+
+}  // namespace rastrace
