@@ -1,0 +1,115 @@
+// Every format assimp reads (glTF, COLLADA, FBX, 3DS, ...), as one mesh: the scene graph's
+// transforms baked in (aiProcess_PreTransformVertices), identical vertices joined
+// (aiProcess_JoinIdenticalVertices), polygons triangulated, points and lines dropped. Meshes are
+// appended in assimp's order; each keeps its material as the per-face material.
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include "core/error.h"
+#include "scenes/mesh_io.h"
+
+namespace rastrace {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The diffuse (or glTF base colour) texture of a material, resolved beside the model file.
+void read_texture(const std::string& path, const aiMaterial& source, Material& material) {
+  aiString texture;
+  if (source.GetTexture(aiTextureType_DIFFUSE, 0, &texture) != AI_SUCCESS &&
+      source.GetTexture(aiTextureType_BASE_COLOR, 0, &texture) != AI_SUCCESS)
+    return;
+  std::string name = texture.C_Str();
+  if (name.empty()) return;
+  if (name[0] == '*')  // embedded in the model file: no file to hand to the renderer
+    throw_in_file(path, "material '" + material.name + "': embedded texture " + name +
+                            " is not supported; expected a texture file beside the model");
+  for (char& c : name)
+    if (c == '\\') c = '/';
+  if (name.starts_with("file://")) name = name.substr(7);
+  fs::path resolved = fs::path(name).is_absolute() ? fs::path(name) : fs::path(path).parent_path() / name;
+  resolved = resolved.lexically_normal();
+  if (!fs::is_regular_file(resolved))
+    throw_in_file(path, "material '" + material.name + "': texture file " + resolved.string() + " not found");
+  material.texture_source.kind = TextureSource::Kind::File;
+  material.texture_source.path = resolved.string();
+}
+
+}  // namespace
+
+Mesh load_with_assimp(const std::string& path) {
+  std::error_code error;
+  if (!fs::exists(path, error)) throw_in_file(path, "no such file");
+  if (fs::is_directory(path, error)) throw_in_file(path, "is a directory, expected a file");
+  Assimp::Importer importer;
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  const aiScene* scene = importer.ReadFile(
+      path, aiProcess_JoinIdenticalVertices | aiProcess_Triangulate | aiProcess_SortByPType |
+                aiProcess_PreTransformVertices | aiProcess_ValidateDataStructure);
+  if (!scene) throw_in_file(path, std::string("assimp cannot read it: ") + importer.GetErrorString());
+  if (scene->mNumMeshes == 0) throw_in_file(path, "no triangle meshes in the file");
+
+  Mesh mesh;
+  mesh.name = path;
+  for (unsigned m = 0; m < scene->mNumMaterials; ++m) {
+    const aiMaterial& source = *scene->mMaterials[m];
+    Material material;
+    aiString name;
+    if (source.Get(AI_MATKEY_NAME, name) == AI_SUCCESS) material.name = name.C_Str();
+    aiColor4D colour(1.0f, 1.0f, 1.0f, 1.0f);
+    if (source.Get(AI_MATKEY_BASE_COLOR, colour) == AI_SUCCESS || source.Get(AI_MATKEY_COLOR_DIFFUSE, colour) == AI_SUCCESS)
+      material.diffuse = glm::vec4(colour.r, colour.g, colour.b, colour.a);
+    float opacity = 1.0f;
+    if (source.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) material.diffuse.a = opacity;
+    read_texture(path, source, material);
+    mesh.materials.push_back(std::move(material));
+  }
+
+  bool any_normals = false, any_uvs = false;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    any_normals |= scene->mMeshes[m]->HasNormals();
+    any_uvs |= scene->mMeshes[m]->HasTextureCoords(0);
+  }
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh& source = *scene->mMeshes[m];
+    if (!(source.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
+    const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    for (unsigned v = 0; v < source.mNumVertices; ++v) {
+      const aiVector3D& p = source.mVertices[v];
+      mesh.positions.emplace_back(p.x, p.y, p.z);
+      if (any_normals) {
+        const aiVector3D n = source.HasNormals() ? source.mNormals[v] : aiVector3D(0.0f);
+        mesh.normals.emplace_back(n.x, n.y, n.z);
+      }
+      if (any_uvs) {
+        const aiVector3D t = source.HasTextureCoords(0) ? source.mTextureCoords[0][v] : aiVector3D(0.0f);
+        mesh.uvs.emplace_back(t.x, t.y);
+      }
+    }
+    for (unsigned f = 0; f < source.mNumFaces; ++f) {
+      const aiFace& face = source.mFaces[f];
+      if (face.mNumIndices != 3) continue;
+      for (unsigned k = 0; k < 3; ++k) {
+        if (face.mIndices[k] >= source.mNumVertices)
+          throw_in_file(path, "mesh " + std::to_string(m) + " face " + std::to_string(f) + ": index " +
+                                  std::to_string(face.mIndices[k]) + " >= vertex count " + std::to_string(source.mNumVertices));
+        mesh.indices.push_back(base + face.mIndices[k]);
+      }
+      mesh.face_material.push_back(source.mMaterialIndex);
+    }
+  }
+  if (mesh.materials.empty()) mesh.face_material.clear();
+  for (const auto& p : mesh.positions)
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw_in_file(path, "a vertex position is not finite (NaN or infinity)");
+  if (mesh.indices.empty()) throw_in_file(path, "no triangles in the file");
+  return mesh;
+}
+
+}  // namespace rastrace

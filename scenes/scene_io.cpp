@@ -1,0 +1,350 @@
+// Scenes from JSON files (format in docs/scene-format.md), from plain mesh files, or built in.
+#include "scenes/scene_io.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <tuple>
+
+#include <glm/ext/matrix_transform.hpp>
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <nlohmann/json.hpp>
+
+#include "core/error.h"
+#include "scenes/builtin_scenes.h"
+#include "scenes/mesh_io.h"
+#include "scenes/procedural.h"
+#include "scenes/text_parse.h"
+#include "scenes/texture_io.h"
+
+#ifndef RASTRACE_DATA_DIR
+#error "scenes/CMakeLists.txt must define RASTRACE_DATA_DIR"
+#endif
+
+namespace rastrace {
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// Reads a JSON scene, naming every wrong value by its path in the document ("objects[1].camera").
+class SceneReader {
+ public:
+  SceneReader(std::string file) : file_(std::move(file)), folder_(fs::path(file_).parent_path()) {}
+
+  Scene read(const json& root) {
+    expect_object(root, "scene");
+    allow_keys(root, "scene", {"name", "viewport", "background", "camera", "objects"});
+    Scene scene;
+    scene.name = root.contains("name") ? string(root["name"], "name") : file_;
+    if (root.contains("viewport")) {
+      const json& viewport = root["viewport"];
+      expect_object(viewport, "viewport");
+      allow_keys(viewport, "viewport", {"width", "height"});
+      scene.width = integer(required(viewport, "viewport", "width"), "viewport.width", 1, 16384);
+      scene.height = integer(required(viewport, "viewport", "height"), "viewport.height", 1, 16384);
+    }
+    if (root.contains("background")) scene.background = colour(root["background"], "background");
+    const json& objects = required(root, "scene", "objects");
+    if (!objects.is_array() || objects.empty()) fail("objects", "a non-empty array of objects");
+    for (std::size_t i = 0; i < objects.size(); ++i) scene.objects.push_back(object(objects[i], "objects[" + std::to_string(i) + "]"));
+    if (root.contains("camera")) {
+      scene.camera = camera(root["camera"]);
+    } else {
+      glm::vec3 lo(0.0f), hi(0.0f);
+      world_bounds(scene, lo, hi);
+      scene.camera = frame_bounds(lo, hi, static_cast<float>(scene.width) / static_cast<float>(scene.height));
+    }
+    return scene;
+  }
+
+  static void world_bounds(const Scene& scene, glm::vec3& lo, glm::vec3& hi) {
+    bool first = true;
+    for (const SceneObject& object : scene.objects)
+      for (const glm::vec3& p : object.mesh.positions) {
+        const glm::vec3 w = glm::vec3(object.transform * glm::vec4(p, 1.0f));
+        lo = first ? w : glm::min(lo, w);
+        hi = first ? w : glm::max(hi, w);
+        first = false;
+      }
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& where, const std::string& expected) const {
+    throw_in_file(file_, where + ": expected " + expected);
+  }
+  static std::string kind(const json& value) { return value.is_null() ? "null" : value.type_name(); }
+  void expect_object(const json& value, const std::string& where) const {
+    if (!value.is_object()) fail(where, "an object, found " + kind(value));
+  }
+  void allow_keys(const json& value, const std::string& where, std::initializer_list<const char*> keys) const {
+    for (const auto& [key, ignored] : value.items()) {
+      bool known = false;
+      std::string list;
+      for (const char* k : keys) {
+        known |= key == k;
+        list += list.empty() ? k : std::string(", ") + k;
+      }
+      if (!known) fail(where + "." + key, "no such key; known keys here: " + list);
+    }
+  }
+  const json& required(const json& value, const std::string& where, const char* key) const {
+    if (!value.contains(key)) fail(where, std::string("a key \"") + key + "\"");
+    return value[key];
+  }
+  std::string string(const json& value, const std::string& where) const {
+    if (!value.is_string()) fail(where, "a string, found " + kind(value));
+    return value.get<std::string>();
+  }
+  double number(const json& value, const std::string& where) const {
+    if (!value.is_number()) fail(where, "a number, found " + kind(value));
+    const double d = value.get<double>();
+    if (!std::isfinite(d)) fail(where, "a finite number");
+    return d;
+  }
+  int integer(const json& value, const std::string& where, int lo, int hi) const {
+    if (!value.is_number_integer() || value.get<std::int64_t>() < lo || value.get<std::int64_t>() > hi)
+      fail(where, "an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", found " + value.dump());
+    return static_cast<int>(value.get<std::int64_t>());
+  }
+  glm::vec3 vec3(const json& value, const std::string& where) const {
+    if (!value.is_array() || value.size() != 3) fail(where, "an array of 3 numbers, found " + value.dump());
+    return {number(value[0], where + "[0]"), number(value[1], where + "[1]"), number(value[2], where + "[2]")};
+  }
+  glm::vec4 colour(const json& value, const std::string& where) const {
+    if (!value.is_array() || (value.size() != 3 && value.size() != 4))
+      fail(where, "a colour [r, g, b] or [r, g, b, a] with components in 0..1, found " + value.dump());
+    glm::vec4 c(1.0f);
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      const double x = number(value[i], where + "[" + std::to_string(i) + "]");
+      if (x < 0.0 || x > 1.0) fail(where + "[" + std::to_string(i) + "]", "a colour component in 0..1, found " + value[i].dump());
+      c[static_cast<int>(i)] = static_cast<float>(x);
+    }
+    return c;
+  }
+
+  // A path relative to the scene file's folder, else to the data folder.
+  std::string file_path(const json& value, const std::string& where) const {
+    const std::string name = string(value, where);
+    const fs::path path(name);
+    if (path.is_absolute()) {
+      if (!fs::exists(path)) fail(where, "an existing file; " + name + " not found");
+      return name;
+    }
+    const fs::path beside = folder_ / path;
+    if (fs::exists(beside)) return beside.string();
+    const fs::path in_data = fs::path(data_directory()) / path;
+    if (fs::exists(in_data)) return in_data.string();
+    fail(where, "an existing file; \"" + name + "\" found neither in " + (folder_.empty() ? std::string(".") : folder_.string()) +
+                    " nor in the data folder " + data_directory());
+  }
+
+  Camera camera(const json& value) const {
+    expect_object(value, "camera");
+    allow_keys(value, "camera", {"eye", "target", "up", "fov_y", "near", "far"});
+    Camera c;
+    c.eye = vec3(required(value, "camera", "eye"), "camera.eye");
+    c.target = vec3(required(value, "camera", "target"), "camera.target");
+    if (value.contains("up")) c.up = vec3(value["up"], "camera.up");
+    if (value.contains("fov_y")) c.fov_y_degrees = static_cast<float>(number(value["fov_y"], "camera.fov_y"));
+    if (value.contains("near")) c.near_plane = static_cast<float>(number(value["near"], "camera.near"));
+    if (value.contains("far")) c.far_plane = static_cast<float>(number(value["far"], "camera.far"));
+    if (!(c.fov_y_degrees > 0.0f && c.fov_y_degrees < 180.0f)) fail("camera.fov_y", "degrees between 0 and 180 (exclusive)");
+    if (!(c.near_plane > 0.0f)) fail("camera.near", "a positive distance");
+    if (!(c.far_plane > c.near_plane)) fail("camera.far", "a distance greater than camera.near");
+    if (glm::length(c.target - c.eye) == 0.0f) fail("camera.target", "a point different from camera.eye");
+    if (glm::length(glm::cross(c.target - c.eye, c.up)) == 0.0f) fail("camera.up", "a direction not parallel to the view direction");
+    return c;
+  }
+
+  Mesh procedural_mesh(const json& value, const std::string& where) const {
+    allow_keys(value, where, {"procedural", "width", "height", "subdivisions", "segments", "repeat"});
+    const std::string name = string(required(value, where, "procedural"), where + ".procedural");
+    const auto get = [&](const char* key, int fallback, int lo, int hi) {
+      return value.contains(key) ? integer(value[key], where + "." + key, lo, hi) : fallback;
+    };
+    if (name == "grid") return make_grid(get("width", 16, 1, 4096), get("height", 16, 1, 4096));
+    if (name == "icosphere") return make_icosphere(get("subdivisions", 3, 0, 8));
+    if (name == "plane") {
+      const float repeat = value.contains("repeat") ? static_cast<float>(number(value["repeat"], where + ".repeat")) : 1.0f;
+      if (!(repeat > 0.0f)) fail(where + ".repeat", "a positive number");
+      return make_plane(get("segments", 1, 1, 4096), repeat);
+    }
+    fail(where + ".procedural", "\"grid\", \"icosphere\" or \"plane\", found \"" + name + "\"");
+  }
+
+  glm::mat4 transform(const json& value, const std::string& where) const {
+    expect_object(value, where);
+    if (value.contains("matrix")) {
+      allow_keys(value, where, {"matrix"});
+      const json& m = value["matrix"];
+      if (!m.is_array() || m.size() != 16) fail(where + ".matrix", "16 numbers, row by row");
+      glm::mat4 result(1.0f);
+      for (int row = 0; row < 4; ++row)
+        for (int column = 0; column < 4; ++column)
+          result[column][row] = static_cast<float>(number(m[static_cast<std::size_t>(row * 4 + column)], where + ".matrix[" + std::to_string(row * 4 + column) + "]"));
+      return result;
+    }
+    allow_keys(value, where, {"translate", "rotate", "scale"});
+    glm::mat4 result(1.0f);
+    if (value.contains("translate")) result = glm::translate(result, vec3(value["translate"], where + ".translate"));
+    if (value.contains("rotate")) {
+      const glm::vec3 degrees = vec3(value["rotate"], where + ".rotate");
+      result = glm::rotate(result, glm::radians(degrees.z), glm::vec3(0, 0, 1));
+      result = glm::rotate(result, glm::radians(degrees.y), glm::vec3(0, 1, 0));
+      result = glm::rotate(result, glm::radians(degrees.x), glm::vec3(1, 0, 0));
+    }
+    if (value.contains("scale")) {
+      const json& s = value["scale"];
+      const glm::vec3 factors = s.is_number() ? glm::vec3(static_cast<float>(number(s, where + ".scale"))) : vec3(s, where + ".scale");
+      if (factors.x == 0.0f || factors.y == 0.0f || factors.z == 0.0f) fail(where + ".scale", "non-zero factors");
+      result = glm::scale(result, factors);
+    }
+    return result;
+  }
+
+  TextureSource texture(const json& value, const std::string& where) const {
+    TextureSource source;
+    if (value.is_null()) return source;
+    if (value.is_string()) {
+      source.kind = TextureSource::Kind::File;
+      source.path = file_path(value, where);
+      return source;
+    }
+    if (!value.is_object()) fail(where, "a texture file name, a procedural texture object or null, found " + kind(value));
+    allow_keys(value, where, {"procedural", "size", "checks"});
+    const std::string name = string(required(value, where, "procedural"), where + ".procedural");
+    if (name == "checker") source.kind = TextureSource::Kind::Checker;
+    else if (name == "four_colour" || name == "four_color") source.kind = TextureSource::Kind::FourColour;
+    else if (name == "gradient") source.kind = TextureSource::Kind::Gradient;
+    else fail(where + ".procedural", "\"checker\", \"four_colour\" or \"gradient\", found \"" + name + "\"");
+    if (value.contains("size")) source.size = integer(value["size"], where + ".size", 1, 16384);
+    if (value.contains("checks")) source.checks = integer(value["checks"], where + ".checks", 1, source.size);
+    return source;
+  }
+
+  SceneObject object(const json& value, const std::string& where) const {
+    expect_object(value, where);
+    allow_keys(value, where, {"name", "mesh", "uv_projection", "transform", "material"});
+    SceneObject result;
+    const json& mesh = required(value, where, "mesh");
+    if (mesh.is_string()) result.mesh = load_mesh(file_path(mesh, where + ".mesh"));
+    else if (mesh.is_object()) result.mesh = procedural_mesh(mesh, where + ".mesh");
+    else fail(where + ".mesh", "a mesh file name or a procedural mesh object, found " + kind(mesh));
+    if (value.contains("name")) result.mesh.name = string(value["name"], where + ".name");
+    if (value.contains("uv_projection")) {
+      const std::string projection = string(value["uv_projection"], where + ".uv_projection");
+      if (projection == "spherical") project_uvs_spherical(result.mesh);
+      else if (projection == "planar_x") project_uvs_planar(result.mesh, 0);
+      else if (projection == "planar_y") project_uvs_planar(result.mesh, 1);
+      else if (projection == "planar_z") project_uvs_planar(result.mesh, 2);
+      else fail(where + ".uv_projection", "\"spherical\", \"planar_x\", \"planar_y\" or \"planar_z\", found \"" + projection + "\"");
+    }
+    if (value.contains("transform")) result.transform = transform(value["transform"], where + ".transform");
+    if (value.contains("material")) {
+      const json& m = value["material"];
+      const std::string at = where + ".material";
+      expect_object(m, at);
+      allow_keys(m, at, {"name", "colour", "color", "texture"});
+      if (result.mesh.materials.empty()) result.mesh.materials.push_back(Material{});
+      for (Material& material : result.mesh.materials) {
+        if (m.contains("name")) material.name = string(m["name"], at + ".name");
+        if (m.contains("colour")) material.diffuse = colour(m["colour"], at + ".colour");
+        if (m.contains("color")) material.diffuse = colour(m["color"], at + ".color");
+        if (m.contains("texture")) material.texture_source = texture(m["texture"], at + ".texture");
+      }
+      if (m.contains("texture") && !m["texture"].is_null() && result.mesh.uvs.empty())
+        fail(at + ".texture", "a mesh with texture coordinates; this one has none: add \"uv_projection\"");
+    }
+    return result;
+  }
+
+  std::string file_;
+  fs::path folder_;
+};
+
+Scene load_json_scene(const std::string& path) {
+  const std::string text = read_whole_file(path);
+  json root;
+  try {
+    root = json::parse(text, nullptr, true, true);
+  } catch (const json::parse_error& e) {
+    // Report the line and column of the byte where parsing stopped.
+    const std::size_t byte = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
+    std::uint64_t line = 1, column = 1;
+    for (std::size_t i = 0; i < byte; ++i) {
+      if (text[i] == '\n') ++line, column = 1;
+      else ++column;
+    }
+    std::string message = e.what();
+    const std::size_t colon = message.find(": ", message.find("parse error"));
+    if (colon != std::string::npos) message = message.substr(colon + 2);
+    throw_at_line(path, line, "column " + std::to_string(column) + ": invalid JSON: " + message);
+  }
+  Scene scene = SceneReader(path).read(root);
+  load_scene_textures(scene);
+  return scene;
+}
+
+}  // namespace
+
+std::string data_directory() {
+  const char* from_environment = std::getenv("RASTRACE_DATA");
+  if (from_environment && *from_environment) return from_environment;
+  return RASTRACE_DATA_DIR;
+}
+
+Camera frame_bounds(const glm::vec3& lo, const glm::vec3& hi, float aspect) {
+  Camera camera;
+  const glm::vec3 centre = (lo + hi) * 0.5f;
+  const float radius = std::max(glm::length(hi - lo) * 0.5f, 1e-6f);
+  const float half_v = glm::radians(camera.fov_y_degrees) * 0.5f;
+  const float half_h = std::atan(std::tan(half_v) * (aspect > 0.0f ? aspect : 1.0f));
+  const float distance = radius / std::sin(std::min(half_v, half_h)) * 1.05f;
+  const glm::vec3 direction = glm::normalize(glm::vec3(0.0f, 0.35f, 1.0f));
+  camera.target = centre;
+  camera.eye = centre + direction * distance;
+  camera.up = glm::vec3(0.0f, 1.0f, 0.0f);
+  camera.near_plane = std::max(distance - radius * 1.5f, radius * 0.01f);
+  camera.far_plane = distance + radius * 1.5f;
+  return camera;
+}
+
+void load_scene_textures(Scene& scene) {
+  std::map<std::tuple<int, std::string, int, int>, int> loaded;
+  for (SceneObject& object : scene.objects)
+    for (Material& material : object.mesh.materials) {
+      const TextureSource& source = material.texture_source;
+      if (source.kind == TextureSource::Kind::None) {
+        material.texture = -1;
+        continue;
+      }
+      const auto key = std::make_tuple(static_cast<int>(source.kind), source.path, source.size, source.checks);
+      auto it = loaded.find(key);
+      if (it == loaded.end()) {
+        scene.textures.push_back(load_texture(source));
+        it = loaded.emplace(key, static_cast<int>(scene.textures.size()) - 1).first;
+      }
+      material.texture = it->second;
+    }
+}
+
+Scene load_scene(const std::string& spec) {
+  if (spec.starts_with("builtin:")) return make_builtin_scene(spec.substr(8));
+  std::string extension = fs::path(spec).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".json") return load_json_scene(spec);
+  Scene scene;
+  scene.name = spec;
+  scene.objects.push_back(SceneObject{load_mesh(spec), glm::mat4(1.0f)});
+  glm::vec3 lo(0.0f), hi(0.0f);
+  SceneReader::world_bounds(scene, lo, hi);
+  scene.camera = frame_bounds(lo, hi, static_cast<float>(scene.width) / static_cast<float>(scene.height));
+  load_scene_textures(scene);
+  return scene;
+}
+
+}  // namespace rastrace

@@ -1,0 +1,78 @@
+// Image files through OpenImageIO, converted to 8-bit RGBA with row 0 at the top.
+#include "scenes/texture_io.h"
+
+#include <filesystem>
+#include <limits>
+
+#include <OpenImageIO/imageio.h>
+
+#include "core/error.h"
+
+namespace rastrace {
+
+Image load_image(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) throw_in_file(path, "no such file (expected a texture image)");
+  if (std::filesystem::is_directory(path, error)) throw_in_file(path, "is a directory, expected an image file");
+  auto input = OIIO::ImageInput::open(path);
+  if (!input) throw_in_file(path, "cannot read image (expected PNG, JPEG, TGA...): " + OIIO::geterror());
+  const OIIO::ImageSpec spec = input->spec();
+  if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1 || spec.depth > 1)
+    throw_in_file(path, "image of " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + "x" +
+                            std::to_string(spec.nchannels) + " channels: expected a 2D image with 1 to 4 channels");
+  if (static_cast<std::uint64_t>(spec.width) * static_cast<std::uint64_t>(spec.height) > (std::uint64_t{1} << 28))
+    throw_in_file(path, "image of " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                            " texels: expected at most 2^28 texels");
+  const int channels = spec.nchannels;
+  std::vector<std::uint8_t> pixels(static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) *
+                                   static_cast<std::size_t>(channels));
+  if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels.data()))
+    throw_in_file(path, "cannot decode image (truncated or corrupt?): " + input->geterror());
+  input->close();
+
+  Image image;
+  image.width = spec.width;
+  image.height = spec.height;
+  image.rgba.resize(static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height) * 4);
+  const std::size_t texels = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
+  for (std::size_t i = 0; i < texels; ++i) {
+    const std::uint8_t* in = pixels.data() + i * static_cast<std::size_t>(channels);
+    std::uint8_t* out = image.rgba.data() + i * 4;
+    if (channels <= 2) {
+      out[0] = out[1] = out[2] = in[0];
+      out[3] = channels == 2 ? in[1] : 255;
+    } else {
+      out[0] = in[0], out[1] = in[1], out[2] = in[2];
+      out[3] = channels >= 4 ? in[3] : 255;
+    }
+  }
+  return image;
+}
+
+Texture load_texture(const TextureSource& source) {
+  Texture texture;
+  Image base;
+  switch (source.kind) {
+    case TextureSource::Kind::None: throw InputError("load_texture: the material has no texture");
+    case TextureSource::Kind::File:
+      base = load_image(source.path);
+      texture.name = source.path;
+      break;
+    case TextureSource::Kind::Checker:
+      base = make_checker(source.size, source.checks);
+      texture.name = "checker" + std::to_string(source.size) + "/" + std::to_string(source.checks);
+      break;
+    case TextureSource::Kind::FourColour:
+      base = make_four_colour(source.size);
+      texture.name = "four_colour" + std::to_string(source.size);
+      break;
+    case TextureSource::Kind::Gradient:
+      base = make_uv_gradient(source.size);
+      texture.name = "gradient" + std::to_string(source.size);
+      break;
+  }
+  texture.levels = build_mip_chain(std::move(base));
+  return texture;
+}
+
+}  // namespace rastrace
