@@ -25,12 +25,10 @@ ShadedVertex VertexShader::shade(const glm::vec3& position, const glm::vec3* nor
   out.clip = mvp_ * glm::vec4(position, 1.0f);
   if (uv) out.uv = *uv;
   if (lighting_.enabled) {
-    float diffuse = 0.0f;
-    if (normal) {
-      glm::vec3 n = normal_matrix_ * *normal;
-      const float length = glm::length(n);
-      if (length > 0.0f) diffuse = std::max(0.0f, glm::dot(n / length, lighting_.direction));
-    }
+    // Without per-vertex normals GL uses the current normal, (0, 0, 1) by default.
+    const glm::vec3 n = normal_matrix_ * (normal ? *normal : glm::vec3(0.0f, 0.0f, 1.0f));
+    const float length = glm::length(n);
+    const float diffuse = length > 0.0f ? std::max(0.0f, glm::dot(n / length, lighting_.direction)) : 0.0f;
     out.light = lighting_.ambient + diffuse;
   }
   return out;
