@@ -1,0 +1,95 @@
+// Tipsy ("Tipsify"): Sander, Nehab and Barczak, "Fast Triangle Reordering for Vertex Locality and
+// Reduced Overdraw", SIGGRAPH 2007, the vertex-locality pass (their Algorithm 1).
+//
+// The order is built by fanning: all not yet emitted triangles around the current vertex are
+// emitted in the mesh's own order, every vertex they touch is pushed on the dead-end stack and
+// becomes a candidate. The next fanning vertex is the candidate that still has live triangles and
+// will still be in a FIFO cache of k entries after its remaining fan is emitted, preferring the
+// one that entered the cache earliest (the time-stamp rule: the largest s - C[v] with
+// s - C[v] + 2 * live[v] <= k, else any live candidate); with no live candidate the dead-end
+// stack is popped for the most recently touched live vertex, and failing that the next live
+// vertex in input order is taken. The cache is modelled with time stamps, never simulated.
+//
+// Parameters: cache_size (k, the FIFO the order is made for; 12 to 32 typical). The policy is
+// ignored: the rule is defined for FIFO. Linear time. ACMR on real meshes about 0.65-0.75 at
+// k = 16; the paper's steady state on a regular mesh is (n+2)/(2n+2). Deterministic.
+#include <algorithm>
+
+#include "reorder/vertex_faces.h"
+#include "reorder/ordering.h"
+
+namespace rastrace {
+
+Ordering reorder_tipsy(const Mesh& mesh, const ReorderParams& params) {
+  const MeshTopology topology = build_vertex_faces(mesh);
+  const std::uint32_t vertex_count = topology.vertex_count, face_count = topology.face_count;
+  const std::uint32_t* idx = mesh.indices.data();
+  const std::int64_t k = std::max(params.cache_size, 1u);
+
+  std::vector<std::uint32_t> live(vertex_count);
+  for (std::uint32_t v = 0; v < vertex_count; ++v)
+    live[v] = topology.vertex_face_offsets[v + 1] - topology.vertex_face_offsets[v];
+  std::vector<std::int64_t> stamp(vertex_count, 0);
+  std::vector<std::uint8_t> emitted(face_count, 0);
+  std::vector<std::uint32_t> dead_end(3 * std::size_t(face_count));
+  std::size_t dead_end_size = 0;
+  std::vector<std::uint32_t> candidates;
+  candidates.reserve(64);
+
+  Ordering ordering;
+  ordering.face_order.reserve(face_count);
+  ordering.indices.reserve(mesh.indices.size());
+
+  std::int64_t time = k + 1;
+  std::uint32_t input_cursor = 0;
+  std::int64_t fan = vertex_count > 0 ? 0 : -1;
+  while (fan >= 0) {
+    candidates.clear();
+    for (const std::uint32_t face : topology.faces_of_vertex(static_cast<std::uint32_t>(fan))) {
+      if (emitted[face]) continue;
+      emitted[face] = 1;
+      ordering.face_order.push_back(face);
+      const std::uint32_t* corners = idx + 3 * std::size_t(face);
+      for (int i = 0; i < 3; ++i) {
+        const std::uint32_t v = corners[i];
+        ordering.indices.push_back(v);
+        // A degenerate face counts once per distinct vertex, as its adjacency lists it.
+        if ((i > 0 && corners[0] == v) || (i > 1 && corners[1] == v)) continue;
+        dead_end[dead_end_size++] = v;
+        candidates.push_back(v);
+        --live[v];
+        if (time - stamp[v] > k) stamp[v] = time++;
+      }
+    }
+
+    // Time-stamp rule over this fan's vertices.
+    std::int64_t next = -1, best = -1;
+    for (const std::uint32_t v : candidates) {
+      if (live[v] == 0) continue;
+      std::int64_t priority = 0;
+      const std::int64_t age = time - stamp[v];
+      if (age + 2 * std::int64_t(live[v]) <= k) priority = age;
+      if (priority > best) {
+        best = priority;
+        next = v;
+      }
+    }
+    if (next < 0) {
+      while (dead_end_size > 0) {
+        const std::uint32_t v = dead_end[--dead_end_size];
+        if (live[v] > 0) {
+          next = v;
+          break;
+        }
+      }
+    }
+    if (next < 0) {
+      while (input_cursor < vertex_count && live[input_cursor] == 0) ++input_cursor;
+      if (input_cursor < vertex_count) next = input_cursor;
+    }
+    fan = next;
+  }
+  return ordering;
+}
+
+}  // namespace rastrace
