@@ -42,4 +42,11 @@ struct TexelAccess {
   std::uint32_t triangle = 0;  // the drawn triangle's number within the frame
 };
 
+// One byte-address access from a foreign trace (Dinero IV din: label 0 read, 1 write, 2
+// instruction fetch). rastrace's own traces record logical ids instead.
+struct AddressAccess {
+  std::uint64_t address = 0;
+  std::uint8_t label = 0;
+};
+
 }  // namespace rastrace

@@ -15,6 +15,8 @@ class EventSink {
   virtual void vertex_fetches(std::span<const VertexFetch> /*fetches*/) {}
   virtual void texel_accesses(std::span<const TexelAccess> /*accesses*/) {}
   virtual void end_draw() {}
+  // Byte addresses from imported (din) traces; the renderer never emits these.
+  virtual void address_accesses(std::span<const AddressAccess> /*accesses*/) {}
   // End of the frame: flush buffers, finish files.
   virtual void finish() {}
 };

@@ -1,0 +1,114 @@
+// LiveBankSink: an EventSink holding a bank of cache simulators, fed while the renderer runs
+// (render and simulate in one pass, no file) or by replay_trace() from a file. Both paths run
+// this class, so a live render and a replay of its trace give the same numbers to the miss.
+//
+// What it simulates:
+//   vertex         post-transform vertex caches (FIFO/LRU, k entries) over the vertex fetches,
+//                  with the statistics of simulate_vertex_stream(): lookups, misses, drawn
+//                  triangles, degenerate triangles (looked up, not drawn), distinct vertices
+//   texture        byte caches over the texel accesses, mapped to bytes by a texture layout
+//                  (texture_layout.h) built from the textures' level sizes
+//   vertex_buffer  byte caches over the vertex fetches: draw d's vertex v at (d << 40) + v*stride
+//   address        byte caches over raw addresses (din / address records)
+// Byte caches report accesses, hits, misses, bytes fetched and (three_c) Dinero's compulsory /
+// capacity / conflict split from one LRU stack profile per address stream and line size.
+// OPT caches buffer their line stream (16 bytes per access, at most kOptMaxAccesses) and are
+// simulated at finish(). Statistics are valid after finish().
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "cache_sim/byte_cache.h"
+#include "cache_sim/cache_config.h"
+#include "cache_sim/lru_profile.h"
+#include "cache_sim/texture_layout.h"
+#include "cache_sim/vertex_cache.h"
+#include "traces/sink.h"
+
+namespace rastrace {
+
+struct VertexCacheSpec {
+  VertexCachePolicy policy = VertexCachePolicy::Fifo;
+  unsigned entries = 16;
+};
+
+struct TextureCacheSpec {
+  CacheConfig cache;
+  LayoutSpec layout;
+};
+
+struct VertexBufferCacheSpec {
+  CacheConfig cache;
+  std::uint32_t stride = 32;  // bytes per vertex
+};
+
+struct CacheBankConfig {
+  std::vector<VertexCacheSpec> vertex;
+  std::vector<TextureCacheSpec> texture;
+  std::vector<VertexBufferCacheSpec> vertex_buffer;
+  std::vector<CacheConfig> address;
+  bool three_c = true;
+  // Vertex ids of different draws index different buffers: start each draw with an empty
+  // post-transform cache (as hardware does between draws).
+  bool flush_vertex_cache_per_draw = true;
+};
+
+class LiveBankSink final : public EventSink {
+ public:
+  // Throws InputError on an invalid cache or layout. `textures` gives every texture's level sizes
+  // (the trace metadata's textures); texel accesses outside them are InputErrors.
+  LiveBankSink(CacheBankConfig config, TextureLevels textures);
+  ~LiveBankSink() override;
+
+  void begin_draw(const DrawInfo& draw) override;
+  void vertex_fetches(std::span<const VertexFetch> fetches) override;
+  void texel_accesses(std::span<const TexelAccess> accesses) override;
+  void address_accesses(std::span<const AddressAccess> accesses) override;
+  void end_draw() override;
+  void finish() override;
+
+  const CacheBankConfig& config() const { return config_; }
+  // One entry per configured cache, in the order of the config (valid after finish()).
+  const std::vector<VertexStreamStats>& vertex_stats() const;
+  const std::vector<CacheStats>& texture_stats() const;
+  const std::vector<CacheStats>& vertex_buffer_stats() const;
+  const std::vector<CacheStats>& address_stats() const;
+
+ private:
+  struct LineGroup;
+  struct AddressStream;
+  struct BankCache;
+
+  void feed_stream(AddressStream& stream);
+  void on_vertex(std::uint32_t vertex, bool primitive_start);
+  void check_finished() const;
+
+  CacheBankConfig config_;
+  TextureLevels textures_;
+  bool finished_ = false;
+
+  // Post-transform caches and primitive assembly.
+  std::vector<VertexCache> vertex_caches_;
+  std::vector<VertexStreamStats> vertex_results_;
+  VertexStreamStats shared_;  // triangles, degenerates, vertices, indices sent, lookups
+  std::vector<std::uint64_t> vertex_misses_;
+  DrawInfo draw_{};
+  std::uint32_t draw_serial_ = 0;       // counts begin_draw calls (distinct-vertex stamps)
+  std::vector<std::uint32_t> seen_;     // per vertex: draw_serial_ + 1 when referenced in this draw
+  std::uint32_t primitive_[6] = {};
+  unsigned primitive_count_ = 0;
+  std::uint64_t strip_length_ = 0;
+  std::uint64_t strips_in_draw_ = 0;
+
+  // Byte caches.
+  std::vector<std::unique_ptr<AddressStream>> streams_;
+  std::vector<BankCache> caches_;  // texture, then vertex_buffer, then address
+  std::vector<std::size_t> vertex_buffer_streams_;  // stream indices fed by vertex fetches
+  std::vector<std::size_t> texture_streams_;
+  std::vector<std::size_t> address_streams_;
+  std::vector<CacheStats> texture_results_, vertex_buffer_results_, address_results_;
+};
+
+}  // namespace rastrace

@@ -1,0 +1,305 @@
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "traces/crc32c.h"
+#include "traces/memory_sink.h"
+#include "traces/text_formats.h"
+#include "traces/trace_reader.h"
+#include "traces/trace_writer.h"
+
+namespace rastrace {
+namespace {
+
+using ::testing::HasSubstr;
+
+std::string temp_path(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("rastrace_traces_" + std::to_string(::getpid()) + "_" + name)).string();
+}
+
+TraceMetadata sample_metadata() {
+  TraceMetadata m;
+  m.scene = "builtin:grid";
+  m.ordering = "scanline";
+  m.width = 640;
+  m.height = 480;
+  m.filter = "bilinear";
+  m.textures = {{{64, 32}, {32, 16}, {16, 8}}, {{8, 8}}};
+  m.extra["note"] = "test";
+  return m;
+}
+
+// Two draws (a list and a strip), texels in a frame-like walk, a few raw addresses.
+MemorySink sample_events() {
+  MemorySink s;
+  s.begin_draw({0, PrimitiveType::TriangleList, kNoRestart});
+  std::vector<VertexFetch> list;
+  for (std::uint32_t i = 0; i < 300; ++i) list.push_back({(i * 7919u) % 1000u, i % 3 == 0});
+  s.vertex_fetches(list);
+  s.end_draw();
+  s.begin_draw({1, PrimitiveType::TriangleStrip, 0xFFFFu});
+  std::vector<VertexFetch> strip;
+  for (std::uint32_t i = 0; i < 50; ++i) strip.push_back({i, i == 0 || i == 25});
+  s.vertex_fetches(strip);
+  s.end_draw();
+  std::vector<TexelAccess> texels;
+  for (std::uint32_t i = 0; i < 1000; ++i)
+    texels.push_back({i % 2, static_cast<std::uint8_t>(i % 2 ? 0 : (i / 7) % 3), (i * 3) % 8, (i / 5) % 8,
+                      static_cast<std::uint16_t>(i / 4), static_cast<std::uint16_t>(i / 40), i / 100});
+  s.texel_accesses(texels);
+  std::vector<AddressAccess> addresses = {{0x1000, 0}, {0xFFFFFFFFFFFFull, 1}, {0x40, 2}, {0, 0}};
+  s.address_accesses(addresses);
+  return s;
+}
+
+void write_sample(const std::string& path, std::uint32_t chunk_records = 64) {
+  TraceWriter writer(path, sample_metadata(), {3, chunk_records});
+  const MemorySink events = sample_events();
+  writer.begin_draw(events.draws[0]);
+  writer.vertex_fetches(std::span(events.fetches).subspan(0, 300));
+  writer.end_draw();
+  writer.begin_draw(events.draws[1]);
+  writer.vertex_fetches(std::span(events.fetches).subspan(300));
+  writer.end_draw();
+  writer.texel_accesses(events.texels);
+  writer.address_accesses({{{0x1000, 0}, {0xFFFFFFFFFFFFull, 1}, {0x40, 2}, {0, 0}}});
+  writer.finish();
+}
+
+struct RecordingSink final : EventSink {
+  MemorySink memory;
+  std::vector<DrawInfo>& draws = memory.draws;
+  std::vector<std::size_t>& draw_first_fetch = memory.draw_first_fetch;
+  std::vector<VertexFetch>& fetches = memory.fetches;
+  std::vector<TexelAccess>& texels = memory.texels;
+  std::vector<AddressAccess> addresses;
+  int ends = 0;
+  bool finished = false;
+  void begin_draw(const DrawInfo& d) override { memory.begin_draw(d); }
+  void vertex_fetches(std::span<const VertexFetch> f) override { memory.vertex_fetches(f); }
+  void texel_accesses(std::span<const TexelAccess> t) override { memory.texel_accesses(t); }
+  void address_accesses(std::span<const AddressAccess> a) override { addresses.insert(addresses.end(), a.begin(), a.end()); }
+  void end_draw() override { ++ends; }
+  void finish() override { finished = true; }
+};
+
+void expect_same_events(const RecordingSink& got, const MemorySink& want) {
+  ASSERT_EQ(got.draws.size(), want.draws.size());
+  for (std::size_t i = 0; i < want.draws.size(); ++i) {
+    EXPECT_EQ(got.draws[i].draw, want.draws[i].draw);
+    EXPECT_EQ(got.draws[i].type, want.draws[i].type);
+    EXPECT_EQ(got.draws[i].restart_index, want.draws[i].restart_index);
+    EXPECT_EQ(got.draw_first_fetch[i], want.draw_first_fetch[i]);
+  }
+  EXPECT_EQ(got.ends, 2);
+  ASSERT_EQ(got.fetches.size(), want.fetches.size());
+  for (std::size_t i = 0; i < want.fetches.size(); ++i) {
+    EXPECT_EQ(got.fetches[i].vertex, want.fetches[i].vertex) << i;
+    EXPECT_EQ(got.fetches[i].primitive_start, want.fetches[i].primitive_start) << i;
+  }
+  ASSERT_EQ(got.texels.size(), want.texels.size());
+  for (std::size_t i = 0; i < want.texels.size(); ++i) {
+    const TexelAccess &a = got.texels[i], &b = want.texels[i];
+    EXPECT_TRUE(a.texture == b.texture && a.level == b.level && a.x == b.x && a.y == b.y && a.pixel_x == b.pixel_x &&
+                a.pixel_y == b.pixel_y && a.triangle == b.triangle)
+        << i;
+  }
+  ASSERT_EQ(got.addresses.size(), 4u);
+  EXPECT_EQ(got.addresses[1].address, 0xFFFFFFFFFFFFull);
+  EXPECT_EQ(got.addresses[2].label, 2);
+}
+
+TEST(Crc32c, MatchesTheCastagnoliCheckValue) {
+  EXPECT_EQ(crc32c("123456789", 9), 0xE3069283u);
+  EXPECT_EQ(crc32c("6789", 4, crc32c("12345", 5)), 0xE3069283u);
+}
+
+TEST(TraceFile, RoundTripKeepsEveryRecordAndTheMetadata) {
+  const std::string path = temp_path("roundtrip.rtrace");
+  write_sample(path);
+  TraceReader reader(path);
+  EXPECT_EQ(reader.metadata().scene, "builtin:grid");
+  EXPECT_EQ(reader.metadata().textures, sample_metadata().textures);
+  EXPECT_EQ(reader.metadata().width, 640u);
+  EXPECT_EQ(reader.metadata().filter, "bilinear");
+  EXPECT_FALSE(reader.metadata().tool_version.empty());
+  EXPECT_EQ(reader.records(RecordKind::Vertex), 350u);
+  EXPECT_EQ(reader.records(RecordKind::Texel), 1000u);
+  EXPECT_EQ(reader.records(RecordKind::Address), 4u);
+  // 300 fetches in 64-record chunks = 5 chunks, 50 = 1, 1000 texels = 16, 4 addresses = 1.
+  EXPECT_EQ(reader.chunks().size(), 23u);
+  RecordingSink sink;
+  replay_trace(reader, sink);
+  EXPECT_TRUE(sink.finished);
+  expect_same_events(sink, sample_events());
+  std::filesystem::remove(path);
+}
+
+TEST(TraceFile, StreamingReadersSeeDrawsAndTexelsInOrder) {
+  const std::string path = temp_path("stream.rtrace");
+  write_sample(path, 100);
+  VertexTraceReader vertices(path);
+  VertexBatch batch;
+  std::vector<std::uint32_t> starts_of_draw;
+  std::uint64_t fetched = 0;
+  int ends = 0;
+  while (vertices.next(batch)) {
+    if (batch.starts_draw) starts_of_draw.push_back(batch.draw.draw);
+    ends += batch.ends_draw;
+    fetched += batch.fetches.size();
+  }
+  EXPECT_EQ(starts_of_draw, (std::vector<std::uint32_t>{0, 1}));
+  EXPECT_EQ(ends, 2);
+  EXPECT_EQ(fetched, 350u);
+  TexelTraceReader texels(path);
+  std::span<const TexelAccess> t;
+  std::uint64_t count = 0, x_sum = 0;
+  while (texels.next(t)) {
+    count += t.size();
+    for (const auto& a : t) x_sum += a.x;
+  }
+  EXPECT_EQ(count, 1000u);
+  std::uint64_t want = 0;
+  for (std::uint32_t i = 0; i < 1000; ++i) want += (i * 3) % 8;
+  EXPECT_EQ(x_sum, want);
+  std::filesystem::remove(path);
+}
+
+TEST(TraceFile, WriterWithoutFinishLeavesNoFile) {
+  const std::string path = temp_path("unfinished.rtrace");
+  {
+    TraceWriter writer(path, sample_metadata());
+    writer.texel_accesses(sample_events().texels);
+  }
+  EXPECT_FALSE(std::filesystem::exists(path));
+}
+
+std::string bytes_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+void put_bytes(const std::string& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+std::string open_error(const std::string& path) {
+  try {
+    TraceReader reader(path);
+    RecordingSink sink;
+    replay_trace(reader, sink);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(TraceFile, WrongMagicIsNamed) {
+  const std::string path = temp_path("magic.rtrace");
+  put_bytes(path, "NOTATRACEFILE AT ALL");
+  EXPECT_THAT(open_error(path), HasSubstr("byte 0: not a rastrace trace"));
+  std::filesystem::remove(path);
+}
+
+TEST(TraceFile, UnknownVersionIsNamed) {
+  const std::string path = temp_path("version.rtrace");
+  write_sample(path);
+  std::string bytes = bytes_of(path);
+  bytes[8] = 7;
+  put_bytes(path, bytes);
+  EXPECT_THAT(open_error(path), HasSubstr("byte 8: unknown trace version 7"));
+  std::filesystem::remove(path);
+}
+
+TEST(TraceFile, TruncatedFileNamesTheTruncatedChunkAndItsOffset) {
+  const std::string path = temp_path("truncated.rtrace");
+  write_sample(path);
+  const std::string bytes = bytes_of(path);
+  TraceReader reader(path);
+  const ChunkInfo third = reader.chunks()[2];
+  put_bytes(path, bytes.substr(0, third.offset + 40));
+  EXPECT_THAT(open_error(path), HasSubstr("byte " + std::to_string(third.offset) + ": truncated trace: chunk 2 needs"));
+  // Cut exactly between chunks: no index.
+  put_bytes(path, bytes.substr(0, third.offset));
+  EXPECT_THAT(open_error(path), HasSubstr("no chunk index and footer after chunk 2"));
+  std::filesystem::remove(path);
+}
+
+TEST(TraceFile, CorruptedPayloadIsAChecksumMismatchNamingTheChunk) {
+  const std::string path = temp_path("corrupt.rtrace");
+  write_sample(path);
+  std::string bytes = bytes_of(path);
+  const ChunkInfo fifth = TraceReader(path).chunks()[4];
+  bytes[fifth.offset + kChunkHeaderBytes + 3] ^= 0x20;
+  put_bytes(path, bytes);
+  EXPECT_THAT(open_error(path), HasSubstr("byte " + std::to_string(fifth.offset) + ": chunk 4: checksum mismatch"));
+  std::filesystem::remove(path);
+}
+
+TEST(TraceFile, CsvExportImportRoundTrip) {
+  const std::string path = temp_path("csv.rtrace"), csv = temp_path("export.csv"), back = temp_path("back.rtrace");
+  write_sample(path);
+  {
+    TraceReader reader(path);
+    std::ofstream out(csv);
+    export_csv(reader, out);
+  }
+  EXPECT_EQ(read_csv_metadata(csv), [] {
+    TraceMetadata m = sample_metadata();
+    m.tool_version = TraceReader(temp_path("csv.rtrace")).metadata().tool_version;
+    return m;
+  }());
+  {
+    TraceWriter writer(back, read_csv_metadata(csv), {3, 64});
+    import_csv(csv, writer);
+  }
+  TraceReader reader(back);
+  RecordingSink sink;
+  replay_trace(reader, sink);
+  expect_same_events(sink, sample_events());
+  for (const auto& p : {path, csv, back}) std::filesystem::remove(p);
+}
+
+TEST(TraceFile, CsvErrorsNameTheLine) {
+  const std::string csv = temp_path("bad.csv");
+  put_bytes(csv,
+            "event,draw,type,restart,vertex,primitive_start,texture,level,x,y,pixel_x,pixel_y,triangle,address,label\n"
+            "vertex,,,,12,1,,,,,,,,,\nvertex,,,,x12,0,,,,,,,,,\n");
+  MemorySink sink;
+  try {
+    import_csv(csv, sink);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_THAT(std::string(e.what()), HasSubstr(":3: column vertex: 'x12' is not an unsigned number"));
+  }
+  std::filesystem::remove(csv);
+}
+
+TEST(TraceFile, DinImportReadsLabelsAndHexAddresses) {
+  const std::string din = temp_path("in.din");
+  put_bytes(din, "0 1000\n1 0x2000\n\n2 ffffffff\n3 0\n0 40\n");
+  RecordingSink sink;
+  EXPECT_EQ(import_din(din, sink), 4u);
+  ASSERT_EQ(sink.addresses.size(), 4u);
+  EXPECT_EQ(sink.addresses[0].address, 0x1000u);
+  EXPECT_EQ(sink.addresses[1].address, 0x2000u);
+  EXPECT_EQ(sink.addresses[2].address, 0xFFFFFFFFu);
+  EXPECT_EQ(sink.addresses[2].label, 2);
+  EXPECT_EQ(sink.addresses[3].address, 0x40u);
+  put_bytes(din, "0 1000\n0 zz\n");
+  try {
+    import_din(din, sink);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_THAT(std::string(e.what()), HasSubstr("in.din:2: column address: 'zz' is not a hexadecimal number"));
+  }
+  std::filesystem::remove(din);
+}
+
+}  // namespace
+}  // namespace rastrace

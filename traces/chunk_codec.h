@@ -1,0 +1,34 @@
+// The record encoding inside a trace chunk (before zstd): struct of arrays, one column per field.
+// A column is: width w (1 byte: 0, 1, 2, 4 or 8), the first value (8 bytes), then the zig-zag
+// deltas of the following records, w bytes each, little endian. Rendered traces move in small
+// steps (neighbouring texels, consecutive vertex ids), so most deltas fit one byte or none, and
+// decoding is a flat prefix sum per column. Vertex chunks start with their draw (draw number,
+// primitive type, restart index) and keep primitive starts as a bitmap.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "traces/events.h"
+
+namespace rastrace {
+
+enum class RecordKind : std::uint8_t { Vertex = 1, Texel = 2, Address = 3 };
+const char* to_string(RecordKind kind);
+
+void encode_vertex_records(const DrawInfo& draw, std::span<const VertexFetch> fetches, std::string& raw);
+void encode_texel_records(std::span<const TexelAccess> texels, std::string& raw);
+void encode_address_records(std::span<const AddressAccess> addresses, std::string& raw);
+
+// Decoders append nothing: they resize `out` to `records`. They return an empty string on
+// success, or what was wrong (the caller names the file and chunk).
+std::string decode_vertex_records(std::span<const std::uint8_t> raw, std::uint32_t records, DrawInfo& draw,
+                                  std::vector<VertexFetch>& out);
+std::string decode_texel_records(std::span<const std::uint8_t> raw, std::uint32_t records,
+                                 std::vector<TexelAccess>& out);
+std::string decode_address_records(std::span<const std::uint8_t> raw, std::uint32_t records,
+                                   std::vector<AddressAccess>& out);
+
+}  // namespace rastrace

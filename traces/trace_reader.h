@@ -1,0 +1,115 @@
+// Reading trace files (trace_format.h) in bounded memory: one decoded chunk at a time.
+//   TraceReader         the container: metadata, chunk index, random access to any chunk
+//   VertexTraceReader   streams the vertex fetches, draw by draw
+//   TexelTraceReader    streams the texel accesses
+//   replay_trace()      feeds a whole file into any EventSink in file order; `rastrace replay`
+//                       does exactly this into a LiveBankSink, so a replay and a live render
+//                       through the same bank run the same code.
+// Errors are InputErrors naming the file, the chunk and its byte offset: wrong magic, unknown
+// version, missing footer (truncated file; the truncated chunk is located), checksum mismatch,
+// a chunk whose header disagrees with the index, undecodable records.
+#pragma once
+
+#include <cstdint>
+#include <fstream>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "traces/events.h"
+#include "traces/sink.h"
+#include "traces/trace_format.h"
+#include "traces/trace_metadata.h"
+
+namespace rastrace {
+
+class Progress;
+
+struct DecodedChunk {
+  RecordKind kind = RecordKind::Vertex;
+  std::uint8_t flags = 0;  // kChunkStartsDraw, kChunkEndsDraw (vertex chunks)
+  std::uint64_t first_record = 0;
+  DrawInfo draw;  // vertex chunks: the draw they belong to
+  std::vector<VertexFetch> vertices;
+  std::vector<TexelAccess> texels;
+  std::vector<AddressAccess> addresses;
+};
+
+class TraceReader {
+ public:
+  // Reads the header, the metadata and the chunk index; throws InputError on a bad file.
+  explicit TraceReader(const std::string& path);
+  ~TraceReader();
+
+  const std::string& path() const { return path_; }
+  const TraceMetadata& metadata() const { return metadata_; }
+  const std::vector<ChunkInfo>& chunks() const { return chunks_; }
+  std::uint64_t records(RecordKind kind) const { return counts_[static_cast<int>(kind)]; }
+  std::uint64_t file_bytes() const { return file_bytes_; }
+
+  // Reads, checks and decodes chunk i. The result stays valid until the next call.
+  const DecodedChunk& read_chunk(std::size_t i);
+
+  // True when `path` starts with the trace magic (to tell traces from CSV or din files).
+  static bool is_trace_file(const std::string& path);
+
+ private:
+  [[noreturn]] void fail_truncated(std::uint64_t header_end);
+
+  std::string path_;
+  std::ifstream in_;
+  std::uint64_t file_bytes_ = 0;
+  std::uint64_t index_offset_ = 0;
+  TraceMetadata metadata_;
+  std::vector<ChunkInfo> chunks_;
+  std::uint64_t counts_[4] = {0, 0, 0, 0};
+  DecodedChunk chunk_;
+  std::vector<std::uint8_t> stored_;
+  std::vector<std::uint8_t> raw_;
+  void* dctx_ = nullptr;
+};
+
+// Which record kinds replay_trace() delivers.
+struct ReplayKinds {
+  bool vertices = true;
+  bool texels = true;
+  bool addresses = true;
+};
+
+// Feeds every chunk of the file into the sink, in file order, then calls sink.finish().
+// Progress (when given) advances by records.
+void replay_trace(TraceReader& reader, EventSink& sink, ReplayKinds kinds = {}, Progress* progress = nullptr);
+
+struct VertexBatch {
+  DrawInfo draw;
+  bool starts_draw = false;  // first batch of `draw`
+  bool ends_draw = false;    // last batch of `draw`
+  std::span<const VertexFetch> fetches;
+};
+
+class VertexTraceReader {
+ public:
+  explicit VertexTraceReader(const std::string& path) : reader_(path) {}
+  const TraceMetadata& metadata() const { return reader_.metadata(); }
+  std::uint64_t records() const { return reader_.records(RecordKind::Vertex); }
+  // The next batch (one chunk); false at the end of the file.
+  bool next(VertexBatch& batch);
+
+ private:
+  TraceReader reader_;
+  std::size_t next_chunk_ = 0;
+};
+
+class TexelTraceReader {
+ public:
+  explicit TexelTraceReader(const std::string& path) : reader_(path) {}
+  const TraceMetadata& metadata() const { return reader_.metadata(); }
+  std::uint64_t records() const { return reader_.records(RecordKind::Texel); }
+  bool next(std::span<const TexelAccess>& batch);
+
+ private:
+  TraceReader reader_;
+  std::size_t next_chunk_ = 0;
+};
+
+}  // namespace rastrace
