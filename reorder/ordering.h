@@ -60,6 +60,8 @@ Ordering reorder_kcache(const Mesh& mesh, const ReorderParams& params);
 Ordering reorder_morton(const Mesh& mesh, const ReorderParams& params);
 Ordering reorder_hilbert(const Mesh& mesh, const ReorderParams& params);
 Ordering reorder_grid(const Mesh& mesh, const ReorderParams& params);
+Ordering reorder_strip(const Mesh& mesh, const ReorderParams& params);
+Ordering reorder_greedy(const Mesh& mesh, const ReorderParams& params);
 
 // False when the algorithm cannot order this mesh: "grid" needs a make_grid grid (mesh.grid).
 // Tables skip such pairs; running one anyway throws InputError.

@@ -18,6 +18,8 @@ const std::vector<ReorderAlgorithm>& reorder_algorithms() {
       {"morton", "Morton order of triangle centroids", reorder_morton},
       {"hilbert", "Hilbert order of triangle centroids (Skilling 2004)", reorder_hilbert},
       {"grid", "Castano 2009, optimal grid rendering (regular grids only)", reorder_grid},
+      {"strip", "cache-unaware sequential strips with swaps (Evans et al. 1996 / NvTriStrip style)", reorder_strip},
+      {"greedy", "Hoppe 1999, greedy strip-growing with lookahead cache simulation", reorder_greedy},
       {"texgroup", "Yang, Mitra, Huang: faces grouped by texture region, each group by a base algorithm",
        reorder_texgroup},
   };

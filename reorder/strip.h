@@ -1,0 +1,61 @@
+// Triangle strips: turning a face order into a sequential strip stream, and counting what a strip
+// stream costs.
+//
+// Representation (used by `strip`, `greedy` and `local`): one GL triangle strip with primitive
+// restart (Ordering::restart_index = kStripRestart). Consecutive faces of the order that are
+// oriented neighbours (MeshTopology::face_neighbors) continue the strip: one new index, or two when
+// the strip turns the "wrong" way for a sequential strip (a swap, emulated by repeating the pivot
+// vertex, which makes one degenerate triangle: "u w u n" draws (w, u, n) after (.., u, w)). Any
+// other pair of consecutive faces restarts the strip. Every drawn triangle is one mesh face with
+// its original winding (GL's alternating strip winding and the repeated pivot keep consistently
+// oriented neighbours consistent), in the order given.
+//
+// Counts (Hoppe 1999 section 2.1; Yang, Mitra, Huang, Table 1 after Evans et al.):
+// - vertices sent (Yang et al.'s "cost"): indices excluding restart markers, i.e. for each strip
+//   2 + triangles + swaps. A good stripifier sends 1.1-1.25 vertices per triangle.
+// - Hoppe's b (indices per triangle): every index sent including the restart markers, per drawn
+//   triangle; 1.1 <= b <= 1.5 for typical strips, 3 for a triangle list.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "reorder/mesh_topology.h"
+#include "reorder/ordering.h"
+
+namespace rastrace {
+
+inline constexpr std::uint32_t kStripRestart = 0xFFFFFFFFu;
+
+struct StripStats {
+  std::uint64_t strips = 0;         // non-empty strips
+  std::uint64_t triangles = 0;      // drawn (non-degenerate) triangles
+  std::uint64_t swaps = 0;          // degenerate triangles inside strips (duplicated indices)
+  std::uint64_t vertices_sent = 0;  // indices excluding restart markers (Yang et al.'s cost)
+  std::uint64_t indices = 0;        // all indices including restart markers
+
+  // Hoppe's b.
+  double indices_per_triangle() const { return triangles ? double(indices) / double(triangles) : 0.0; }
+  double vertices_per_triangle() const { return triangles ? double(vertices_sent) / double(triangles) : 0.0; }
+};
+
+// Counts a strip stream (restart_index separates strips; kNoRestart if there is none). A list
+// stream can be passed as type TriangleList: then every triangle is its own 3-vertex "strip".
+StripStats strip_stats(std::span<const std::uint32_t> indices, PrimitiveType type,
+                       std::uint32_t restart_index = kStripRestart);
+
+// The strip stream that draws the faces in exactly the given order (see above). The result is a
+// TriangleStrip Ordering with face_order = order.
+Ordering strip_ordering(const Mesh& mesh, const MeshTopology& topology, std::vector<std::uint32_t> order);
+
+// Whether face b can follow face a inside a strip: non-degenerate oriented neighbours.
+bool strip_continues(const Mesh& mesh, const MeshTopology& topology, std::uint32_t a, std::uint32_t b);
+
+// The `strip` algorithm: a cache-unaware greedy stripifier in the spirit of Evans et al.'s SGI
+// "tomesh" variant and NvTriStrip: start at a face with the fewest unvisited neighbours, always
+// continue to the unvisited neighbour with the fewest unvisited neighbours (ties: the one whose
+// own neighbours have fewest, then the one needing no swap), restart when stuck.
+Ordering reorder_strip(const Mesh& mesh, const ReorderParams& params);
+
+}  // namespace rastrace
