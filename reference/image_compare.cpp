@@ -46,6 +46,7 @@ ImageDifference compare_images(int width, int height, const std::uint8_t* ours, 
     }
     d.max_difference = std::max(d.max_difference, largest);
     d.diff_gt_1 += largest > 1;
+    if (centre_on_edge && largest > 1 && !centre_on_edge[p]) ++d.diff_gt_1_off_edge;
     d.diff_gt_2 += largest > 2;
     d.diff_gt_8 += largest > 8;
   }

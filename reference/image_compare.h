@@ -19,6 +19,7 @@ struct ImageDifference {
   std::uint64_t coverage_differs = 0;    // covered in exactly one image
   std::uint64_t coverage_differs_off_edge = 0;  // ... of which not on an edge (needs the edge plane)
   std::uint64_t diff_gt_1 = 0, diff_gt_2 = 0, diff_gt_8 = 0;  // covered pixels, any channel
+  std::uint64_t diff_gt_1_off_edge = 0;  // ... of diff_gt_1, centres not on an edge (needs the plane)
   int max_difference = 0;
   double psnr = 0.0;        // dB, RGB over the covered pixels
   double psnr_image = 0.0;  // dB, OpenImageIO's over the whole image (RGB)
