@@ -32,11 +32,10 @@ Scene grid_scene() {
   checker.texture_source.size = 512;
   checker.texture_source.checks = 16;
   object.mesh.materials.push_back(checker);
-  // The grid's front faces look down -z; turn them up (+y) and centre the unit square: the grid
-  // spans [-1, 1] in x and z at y = 0.
-  object.transform = glm::scale(glm::mat4(1.0f), glm::vec3(2.0f));
-  object.transform = glm::rotate(object.transform, glm::radians(90.0f), glm::vec3(1.0f, 0.0f, 0.0f));
-  object.transform = glm::translate(object.transform, glm::vec3(-0.5f, -0.5f, 0.0f));
+  // The grid's front faces look down -z; turn them up (+y) and centre the unit square so the grid
+  // spans [-1, 1] in x and z at y = 0: (x, y, z) -> (2x - 1, -2z, 2y - 1), exact in floating point.
+  object.transform = glm::mat4(glm::vec4(2.0f, 0.0f, 0.0f, 0.0f), glm::vec4(0.0f, 0.0f, 2.0f, 0.0f),
+                               glm::vec4(0.0f, -2.0f, 0.0f, 0.0f), glm::vec4(-1.0f, 0.0f, -1.0f, 1.0f));
   scene.objects.push_back(std::move(object));
   const float elevation = glm::radians(25.0f), distance = 2.4f;
   scene.camera.target = glm::vec3(0.0f, 0.0f, -0.2f);

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <system_error>
+#include <type_traits>
 
 #include "core/error.h"
 
@@ -72,6 +73,21 @@ bool parse_whole(std::string_view token, T& value) {
   if (*first == '+') ++first;  // from_chars rejects a leading '+', which files do use
   if (first == last) return false;
   const auto [end, error] = std::from_chars(first, last, value);
+  if (error == std::errc::result_out_of_range && end == last) {
+    // Too small (or too large) for T: round through a wider type, giving 0 (or infinity, which
+    // the loaders then reject as not finite).
+    if constexpr (std::is_same_v<T, float>) {
+      double wide = 0.0;
+      if (!parse_whole(token, wide)) return false;
+      value = static_cast<float>(wide);
+      return true;
+    } else if constexpr (std::is_same_v<T, double>) {
+      long double wide = 0.0L;
+      if (!parse_whole(token, wide)) return false;
+      value = static_cast<double>(wide);
+      return true;
+    }
+  }
   return error == std::errc() && end == last;
 }
 }  // namespace
