@@ -209,15 +209,15 @@ void Pipeline::triangle(const Mesh& /*mesh*/, std::uint32_t a, std::uint32_t b, 
     out.colour = p.colour;
     out.uv = p.uv;
   }
-  // Facing from the whole polygon's signed area (image y points down: positive = counter-
-  // clockwise in GL window space = front).
+  // Facing from the whole polygon's signed area in image coordinates (y down): a negative area
+  // is counter-clockwise as seen on screen, GL's default front face.
   float area = 0.0f;
   for (int i = 0; i < polygon.count; ++i) {
     const RasterVertex& p = r[i];
     const RasterVertex& q = r[(i + 1) % polygon.count];
     area += p.x * q.y - q.x * p.y;
   }
-  const bool front = area > 0.0f;
+  const bool front = area < 0.0f;
   if ((options_.cull == CullMode::Back && !front) || (options_.cull == CullMode::Front && front)) {
     ++stats_.culled;
     return;
