@@ -7,8 +7,6 @@
 namespace rastrace {
 
 void add_version_command(CLI::App& app);
-void add_reorder_command(CLI::App& app);
-void add_vcache_command(CLI::App& app);
 void add_info_command(CLI::App& app);
 void add_convert_command(CLI::App& app);
 void add_reorder_command(CLI::App& app);
