@@ -8,9 +8,8 @@
 
 namespace rastrace {
 
-CoverBound adjacency_cover_lower_bound(const Mesh& mesh, const MeshTopology& topology, const AdjacencyDual& dual) {
+CoverBound adjacency_cover_lower_bound(const Mesh& mesh, const AdjacencyDual& dual, bool prune) {
   const auto start = std::chrono::steady_clock::now();
-  (void)topology;
   CoverBound result;
   result.dual_edges = dual.dual_edge_count;
   const std::uint32_t V = dual.vertex_count;
@@ -103,10 +102,11 @@ CoverBound adjacency_cover_lower_bound(const Mesh& mesh, const MeshTopology& top
         }
       bool live = false;
       for (const std::uint32_t y : next) {
-        if (odd_index[y] != kNone && count[y] <= 2 && odd_index[y] > t) pairs.push_back({t, odd_index[y], dist[y]});
-        live = live || count[y] <= 1;
+        if (odd_index[y] != kNone && (count[y] <= 2 || !prune) && odd_index[y] > t)
+          pairs.push_back({t, odd_index[y], dist[y]});
+        live = live || count[y] <= 1 || !prune;
       }
-      if (!live) break;
+      if (!live || next.empty()) break;
       frontier.swap(next);
     }
   }

@@ -32,7 +32,8 @@ struct CoverBound {
 };
 
 // Throws std::runtime_error if the pruned graph has no perfect matching (Lemma 2 says it always
-// has one).
-CoverBound adjacency_cover_lower_bound(const Mesh& mesh, const MeshTopology& topology, const AdjacencyDual& dual);
+// has one). prune = false matches on every pair of odd vertices (quadratic: for tests of the
+// pruning on small meshes).
+CoverBound adjacency_cover_lower_bound(const Mesh& mesh, const AdjacencyDual& dual, bool prune = true);
 
 }  // namespace rastrace

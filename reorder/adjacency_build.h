@@ -1,0 +1,25 @@
+// The whole construction of Sander, Nehab, Chlamtac, Hoppe 2008 in one call: dual graph, cover
+// (reorder/adjacency_cover.h), restricted assignment (reorder/adjacency_assign.h) and the
+// primitives in cover-face order (reorder/adjacency_encode.h). Order them with
+// reorder/adjacency_order.h. The lower bound (reorder/adjacency_bound.h) is separate: it is only
+// needed to judge the cover.
+#pragma once
+
+#include "reorder/adjacency_assign.h"
+#include "reorder/adjacency_cover.h"
+#include "reorder/adjacency_dual.h"
+#include "reorder/adjacency_encode.h"
+
+namespace rastrace {
+
+struct AdjacencyBuild {
+  AdjacencyDual dual;
+  CoverResult cover;
+  FaceAssignment assignment;
+  AdjacencyPrimitives primitives;
+};
+
+// Throws InputError on a malformed mesh (index out of range).
+AdjacencyBuild build_adjacency_primitives(const Mesh& mesh, const CoverParams& params = {});
+
+}  // namespace rastrace
