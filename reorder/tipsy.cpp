@@ -24,39 +24,40 @@ Ordering reorder_tipsy(const Mesh& mesh, const ReorderParams& params) {
   const MeshTopology topology = build_vertex_faces(mesh);
   const std::uint32_t vertex_count = topology.vertex_count, face_count = topology.face_count;
   const std::uint32_t* idx = mesh.indices.data();
-  const std::int64_t k = std::max(params.cache_size, 1u);
 
   std::vector<std::uint32_t> live(vertex_count);
   for (std::uint32_t v = 0; v < vertex_count; ++v)
     live[v] = topology.vertex_face_offsets[v + 1] - topology.vertex_face_offsets[v];
-  std::vector<std::int64_t> stamp(vertex_count, 0);
+  std::vector<std::uint32_t> stamp(vertex_count, 0);
   std::vector<std::uint8_t> emitted(face_count, 0);
+  // The dead-end stack; the entries a fan pushes are also that fan's candidate list.
   std::vector<std::uint32_t> dead_end(3 * std::size_t(face_count));
   std::size_t dead_end_size = 0;
-  std::vector<std::uint32_t> candidates;
-  candidates.reserve(64);
 
   Ordering ordering;
-  ordering.face_order.reserve(face_count);
-  ordering.indices.reserve(mesh.indices.size());
+  ordering.face_order.resize(face_count);
+  ordering.indices.resize(mesh.indices.size());
+  std::uint32_t* order_out = ordering.face_order.data();
+  std::uint32_t* index_out = ordering.indices.data();
 
-  std::int64_t time = k + 1;
+  // Time stamps are unsigned: time - stamp[v] wraps exactly as the paper's counter differences.
+  const std::uint32_t k = std::clamp(params.cache_size, 1u, 1u << 24);
+  std::uint32_t time = k + 1;
   std::uint32_t input_cursor = 0;
   std::int64_t fan = vertex_count > 0 ? 0 : -1;
   while (fan >= 0) {
-    candidates.clear();
+    const std::size_t fan_start = dead_end_size;
     for (const std::uint32_t face : topology.faces_of_vertex(static_cast<std::uint32_t>(fan))) {
       if (emitted[face]) continue;
       emitted[face] = 1;
-      ordering.face_order.push_back(face);
+      *order_out++ = face;
       const std::uint32_t* corners = idx + 3 * std::size_t(face);
       for (int i = 0; i < 3; ++i) {
         const std::uint32_t v = corners[i];
-        ordering.indices.push_back(v);
+        *index_out++ = v;
         // A degenerate face counts once per distinct vertex, as its adjacency lists it.
         if ((i > 0 && corners[0] == v) || (i > 1 && corners[1] == v)) continue;
         dead_end[dead_end_size++] = v;
-        candidates.push_back(v);
         --live[v];
         if (time - stamp[v] > k) stamp[v] = time++;
       }
@@ -64,11 +65,12 @@ Ordering reorder_tipsy(const Mesh& mesh, const ReorderParams& params) {
 
     // Time-stamp rule over this fan's vertices.
     std::int64_t next = -1, best = -1;
-    for (const std::uint32_t v : candidates) {
+    for (std::size_t c = fan_start; c < dead_end_size; ++c) {
+      const std::uint32_t v = dead_end[c];
       if (live[v] == 0) continue;
       std::int64_t priority = 0;
-      const std::int64_t age = time - stamp[v];
-      if (age + 2 * std::int64_t(live[v]) <= k) priority = age;
+      const std::uint32_t age = time - stamp[v];
+      if (std::int64_t(age) + 2 * std::int64_t(live[v]) <= std::int64_t(k)) priority = age;
       if (priority > best) {
         best = priority;
         next = v;

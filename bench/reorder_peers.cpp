@@ -1,0 +1,70 @@
+// Ordering speed against meshoptimizer 0.18, same binary, same meshes: tipsy against
+// meshopt_optimizeVertexCacheFifo (the same algorithm), forsyth against meshopt_optimizeVertexCache
+// (Forsyth-style with tuned scores), kcache for reference. Items processed = triangles, so
+// Google Benchmark prints triangles per second. Cache 16 throughout.
+//   build-reorder/bench/bench_reorder_peers --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include <map>
+#include <string>
+
+#include <benchmark/benchmark.h>
+#include <meshoptimizer.h>
+
+#include "reorder/ordering.h"
+#include "scenes/mesh_io.h"
+
+namespace {
+
+const rastrace::Mesh& bench_mesh(const std::string& name) {
+  static std::map<std::string, rastrace::Mesh> meshes;
+  auto found = meshes.find(name);
+  if (found == meshes.end())
+    found = meshes.emplace(name, rastrace::load_mesh(std::string(RASTRACE_DATA_DIR) + "/meshes/" + name + ".off")).first;
+  return found->second;
+}
+
+const char* const kMeshes[] = {"fandisk", "triceratops", "bunny00"};
+
+template <typename Run>
+void run_on(benchmark::State& state, Run run) {
+  const rastrace::Mesh& mesh = bench_mesh(kMeshes[state.range(0)]);
+  state.SetLabel(kMeshes[state.range(0)]);
+  for (auto _ : state) run(mesh);
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * mesh.face_count()));
+}
+
+void ours(benchmark::State& state, rastrace::Ordering (*algorithm)(const rastrace::Mesh&, const rastrace::ReorderParams&)) {
+  rastrace::ReorderParams params;
+  params.cache_size = 16;
+  run_on(state, [&](const rastrace::Mesh& mesh) {
+    rastrace::Ordering ordering = algorithm(mesh, params);
+    benchmark::DoNotOptimize(ordering.indices.data());
+  });
+}
+
+void BM_tipsy(benchmark::State& state) { ours(state, rastrace::reorder_tipsy); }
+void BM_forsyth(benchmark::State& state) { ours(state, rastrace::reorder_forsyth); }
+void BM_kcache(benchmark::State& state) { ours(state, rastrace::reorder_kcache); }
+
+void BM_meshopt_fifo(benchmark::State& state) {
+  run_on(state, [](const rastrace::Mesh& mesh) {
+    std::vector<unsigned> out(mesh.indices.size());
+    meshopt_optimizeVertexCacheFifo(out.data(), mesh.indices.data(), mesh.indices.size(), mesh.vertex_count(), 16);
+    benchmark::DoNotOptimize(out.data());
+  });
+}
+
+void BM_meshopt_vcache(benchmark::State& state) {
+  run_on(state, [](const rastrace::Mesh& mesh) {
+    std::vector<unsigned> out(mesh.indices.size());
+    meshopt_optimizeVertexCache(out.data(), mesh.indices.data(), mesh.indices.size(), mesh.vertex_count());
+    benchmark::DoNotOptimize(out.data());
+  });
+}
+
+BENCHMARK(BM_tipsy)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_meshopt_fifo)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_forsyth)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_meshopt_vcache)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_kcache)->DenseRange(0, 2)->Unit(benchmark::kMillisecond);
+
+}  // namespace
