@@ -52,7 +52,7 @@ Scene bunny_scene() {
   scene.name = "builtin:bunny";
   SceneObject object;
   object.mesh = load_mesh(data_file("meshes/bunny00.off"));
-  project_uvs_planar(object.mesh, 2);
+  project_uvs_planar(object.mesh, 0);  // the side view: every quadrant holds 17-40% of the faces
   Material four;
   four.name = "four_colour";
   four.texture_source.kind = TextureSource::Kind::FourColour;

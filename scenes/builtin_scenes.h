@@ -3,7 +3,7 @@
 //           squares, seen by a perspective camera at a grazing-ish angle (about 25 degrees above
 //           the plane), so the far half is minified and uses the deeper mip levels
 //   bunny   data/meshes/bunny00.off with Yang et al.'s four-colour texture on planar UVs projected
-//           along z (each colour covers one quadrant of the bunny's silhouette)
+//           along x (each colour covers one quadrant of the bunny's side view, 17-40% of the faces)
 //   spider  data/assimp/OBJ/spider.obj with its own materials and textures
 #pragma once
 
