@@ -11,5 +11,6 @@ void add_info_command(CLI::App& app);
 void add_convert_command(CLI::App& app);
 void add_reorder_command(CLI::App& app);
 void add_vcache_command(CLI::App& app);
+void add_adjacency_command(CLI::App& app);
 
 }  // namespace rastrace

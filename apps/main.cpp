@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   rastrace::add_convert_command(app);
   rastrace::add_reorder_command(app);
   rastrace::add_vcache_command(app);
+  rastrace::add_adjacency_command(app);
 
   try {
     app.parse(argc, argv);
