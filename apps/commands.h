@@ -7,10 +7,15 @@
 namespace rastrace {
 
 void add_version_command(CLI::App& app);
+void add_replay_command(CLI::App& app);
+void add_sweep_command(CLI::App& app);
+void add_trace_command(CLI::App& app);
 void add_info_command(CLI::App& app);
 void add_convert_command(CLI::App& app);
 void add_reorder_command(CLI::App& app);
 void add_vcache_command(CLI::App& app);
 void add_adjacency_command(CLI::App& app);
+void add_render_command(CLI::App& app);
+void add_compare_command(CLI::App& app);
 
 }  // namespace rastrace

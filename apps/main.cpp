@@ -12,11 +12,16 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "rastrace " RASTRACE_VERSION);
   rastrace::add_version_command(app);
+  rastrace::add_replay_command(app);
+  rastrace::add_sweep_command(app);
+  rastrace::add_trace_command(app);
   rastrace::add_info_command(app);
   rastrace::add_convert_command(app);
   rastrace::add_reorder_command(app);
   rastrace::add_vcache_command(app);
   rastrace::add_adjacency_command(app);
+  rastrace::add_render_command(app);
+  rastrace::add_compare_command(app);
 
   try {
     app.parse(argc, argv);

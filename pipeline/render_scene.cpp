@@ -4,6 +4,8 @@
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "core/error.h"
+
 namespace rastrace {
 
 CameraMatrices camera_matrices(const Scene& scene) {
@@ -22,11 +24,19 @@ RenderResult render_scene(const Scene& scene, const RenderOptions& options, Even
   Pipeline pipeline(result.framebuffer, options.pipeline, sink);
   const CameraMatrices camera = camera_matrices(scene);
   pipeline.set_camera(camera.view, camera.projection);
-  for (const SceneObject& object : scene.objects) {
+  if (!options.object_draws.empty() && options.object_draws.size() != scene.objects.size())
+    throw InputError(scene.name + ": " + std::to_string(options.object_draws.size()) + " draw calls for " +
+                     std::to_string(scene.objects.size()) + " objects");
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    const SceneObject& object = scene.objects[o];
     DrawCall call;
-    call.indices = object.mesh.indices;
-    call.type = PrimitiveType::TriangleList;
-    call.primitive_materials = object.mesh.face_material;
+    if (options.object_draws.empty()) {
+      call.indices = object.mesh.indices;
+      call.type = PrimitiveType::TriangleList;
+      call.primitive_materials = object.mesh.face_material;
+    } else {
+      call = options.object_draws[o];
+    }
     pipeline.draw(object.mesh, object.transform, call, scene.textures);
   }
   pipeline.finish();
