@@ -1,0 +1,150 @@
+#include "apps/cache_report.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <map>
+#include <set>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/units.h"
+
+namespace rastrace {
+
+std::vector<std::pair<std::string, TableCell>> trace_parameters(const std::string& path, const TraceSummary& s) {
+  std::vector<std::pair<std::string, TableCell>> p;
+  p.emplace_back("trace", std::filesystem::path(path).filename().string());
+  const char* format = s.format == TraceFileFormat::Container ? "rastrace" : s.format == TraceFileFormat::Csv ? "csv" : "din";
+  p.emplace_back("trace_format", format);
+  if (s.format != TraceFileFormat::Din) {
+    p.emplace_back("scene", s.metadata.scene);
+    p.emplace_back("ordering", s.metadata.ordering);
+    p.emplace_back("resolution", std::to_string(s.metadata.width) + "x" + std::to_string(s.metadata.height));
+    p.emplace_back("filter", s.metadata.filter);
+    p.emplace_back("trace_tool_version", s.metadata.tool_version);
+  }
+  return p;
+}
+
+Table byte_cache_table(const std::string& title, std::vector<std::pair<std::string, TableCell>> parameters,
+                       const std::vector<SweepRow>& rows, const std::string& source) {
+  Table t;
+  t.title = title;
+  t.parameters = std::move(parameters);
+  t.parameters.emplace_back("source", source);
+  t.columns = {{"size_bytes", "size (B)", 0},   {"line_bytes", "line (B)", 0},  {"assoc", "assoc (0=full)", 0},
+               {"policy", "policy", 0},          {"layout", "layout", 0},        {"accesses", "accesses", 0},
+               {"hits", "hits", 0},              {"misses", "misses", 0},        {"miss_rate", "miss rate", 5},
+               {"bytes_fetched", "bytes fetched", 0}, {"compulsory", "compulsory", 0}, {"capacity", "capacity", 0},
+               {"conflict", "conflict", 0}};
+  for (const SweepRow& r : rows) {
+    const CacheStats& s = r.stats;
+    std::vector<TableCell> cells = {r.cache.size_bytes, r.cache.line_bytes, r.cache.assoc, to_string(r.cache.policy),
+                                    r.layout, s.accesses, s.hits, s.misses, s.miss_rate(), s.bytes_fetched};
+    if (s.has_three_c) {
+      cells.emplace_back(s.compulsory);
+      cells.emplace_back(s.capacity);
+      cells.emplace_back(s.conflict);
+    } else {
+      cells.resize(13);
+    }
+    t.add_row(std::move(cells));
+  }
+  return t;
+}
+
+Table vertex_cache_table(const std::string& title, std::vector<std::pair<std::string, TableCell>> parameters,
+                         const std::vector<VertexSweepRow>& rows) {
+  Table t;
+  t.title = title;
+  t.parameters = std::move(parameters);
+  t.columns = {{"policy", "policy", 0},       {"entries", "entries", 0},   {"lookups", "lookups", 0},
+               {"misses", "misses", 0},       {"triangles", "triangles", 0}, {"degenerate", "degenerate", 0},
+               {"vertices", "vertices", 0},   {"acmr", "ACMR", 3},           {"atvr", "ATVR", 3}};
+  for (const VertexSweepRow& r : rows)
+    t.add_row({to_string(r.cache.policy), r.cache.entries, r.stats.lookups, r.stats.misses, r.stats.triangles,
+               r.stats.degenerate, r.stats.vertices, r.stats.acmr(), r.stats.atvr()});
+  return t;
+}
+
+void write_output(const std::string& path, const std::string& text) {
+  if (path.empty()) {
+    std::cout << text;
+    if (!text.empty() && text.back() != '\n') std::cout << '\n';
+    return;
+  }
+  write_file_atomically(path, [&](std::ostream& out) { out << text; }, false);
+}
+
+SweepSource default_source(const TraceSummary& s) {
+  if (s.format == TraceFileFormat::Din) return SweepSource::Address;
+  if (s.has_counts) {
+    if (s.texels) return SweepSource::Texel;
+    if (s.addresses) return SweepSource::Address;
+    return SweepSource::VertexBuffer;
+  }
+  return s.metadata.textures.empty() ? SweepSource::VertexBuffer : SweepSource::Texel;
+}
+
+void write_miss_rate_plot(const std::string& path, const std::string& title, const std::vector<SweepRow>& rows) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension != ".png" && extension != ".svg")
+    throw InputError("--plot " + path + ": expected a .png or .svg file name");
+  std::set<std::uint32_t> lines, assocs;
+  for (const SweepRow& r : rows) {
+    lines.insert(r.cache.line_bytes);
+    assocs.insert(r.cache.assoc);
+  }
+  // Series keyed by everything but the size.
+  std::map<std::string, std::vector<std::pair<std::uint64_t, double>>> series;
+  for (const SweepRow& r : rows) {
+    std::string name = std::string(to_string(r.cache.policy)) + " " + r.layout;
+    if (lines.size() > 1) name += " " + format_byte_size(r.cache.line_bytes) + " lines";
+    if (assocs.size() > 1) name += r.cache.assoc == 0 ? " full" : " " + std::to_string(r.cache.assoc) + "-way";
+    series[name].emplace_back(r.cache.size_bytes, r.stats.miss_rate());
+  }
+  std::string script;
+  script += extension == ".png" ? "set terminal pngcairo size 1000,650 noenhanced\n" : "set terminal svg size 1000,650 noenhanced\n";
+  script += "set logscale x 2\nset xlabel 'cache size'\nset ylabel 'miss rate'\n";
+  std::set<std::uint64_t> sizes;
+  for (const SweepRow& r : rows) sizes.insert(r.cache.size_bytes);
+  std::string tics;
+  for (const std::uint64_t size : sizes)
+    tics += (tics.empty() ? "" : ", ") + std::string("'") + format_byte_size(size) + "' " + std::to_string(size);
+  script += "set xtics (" + tics + ")\n";
+  script += "set key outside right\nset grid\nset yrange [0:*]\n";
+  std::string quoted_title = title;
+  for (char& c : quoted_title)
+    if (c == '\'' || c == '\n') c = ' ';
+  script += "set title '" + quoted_title + "'\n";
+  int index = 0;
+  for (auto& [name, points] : series) {
+    std::sort(points.begin(), points.end());
+    script += "$s" + std::to_string(index++) + " << EOD\n";
+    for (const auto& [size, rate] : points) {
+      char line[64];
+      std::snprintf(line, sizeof(line), "%llu %.9g\n", static_cast<unsigned long long>(size), rate);
+      script += line;
+    }
+    script += "EOD\n";
+  }
+  write_via_temporary(path, [&](const std::filesystem::path& temporary) {
+    std::string full = "set output '" + temporary.string() + "'\nplot ";
+    index = 0;
+    for (const auto& entry : series) {
+      if (index) full += ", ";
+      full += "$s" + std::to_string(index++) + " using 1:2 with linespoints title '" + entry.first + "'";
+    }
+    full = script + full + "\nunset output\n";
+    FILE* gnuplot = popen("gnuplot 2>&1", "w");
+    if (!gnuplot) throw InputError("--plot: cannot run gnuplot (install gnuplot-nox)");
+    std::fwrite(full.data(), 1, full.size(), gnuplot);
+    const int status = pclose(gnuplot);
+    if (status != 0 || !std::filesystem::exists(temporary) || std::filesystem::file_size(temporary) == 0)
+      throw InputError("--plot " + path + ": gnuplot failed (exit status " + std::to_string(status) + ")");
+  });
+}
+
+}  // namespace rastrace

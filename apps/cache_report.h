@@ -1,0 +1,37 @@
+// Shared wiring of `rastrace replay` and `rastrace sweep`: cache specs from the command line,
+// result tables (core/table.h) that state every parameter, gnuplot plots, output files.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cache_sim/live_bank_sink.h"
+#include "cache_sim/sweep.h"
+#include "core/table.h"
+#include "traces/replay_file.h"
+
+namespace rastrace {
+
+// The parameters every table about this trace states: the file and its metadata.
+std::vector<std::pair<std::string, TableCell>> trace_parameters(const std::string& path, const TraceSummary& summary);
+
+// Byte-cache rows: size_bytes, line_bytes, assoc (0 = full), policy, layout, accesses, hits,
+// misses, miss_rate, bytes_fetched, compulsory, capacity, conflict.
+Table byte_cache_table(const std::string& title, std::vector<std::pair<std::string, TableCell>> parameters,
+                       const std::vector<SweepRow>& rows, const std::string& source);
+// Post-transform rows: policy, entries, lookups, misses, triangles, degenerate, vertices, acmr, atvr.
+Table vertex_cache_table(const std::string& title, std::vector<std::pair<std::string, TableCell>> parameters,
+                         const std::vector<VertexSweepRow>& rows);
+
+// Writes to the file atomically, or to stdout when path is empty.
+void write_output(const std::string& path, const std::string& text);
+
+// Miss rate against cache size (log2 axis), one line per policy and layout (and line size and
+// associativity when those vary). PNG or SVG by extension; written atomically through gnuplot.
+void write_miss_rate_plot(const std::string& path, const std::string& title, const std::vector<SweepRow>& rows);
+
+// The default source for byte caches: texels when the trace has any, then addresses, then vertices.
+SweepSource default_source(const TraceSummary& summary);
+
+}  // namespace rastrace

@@ -1,0 +1,87 @@
+// `rastrace trace info|convert`: look inside a trace file, and convert between the rastrace
+// container, its CSV export and Dinero din input (din -> container or CSV).
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include "apps/commands.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/table.h"
+#include "traces/replay_file.h"
+#include "traces/text_formats.h"
+#include "traces/trace_writer.h"
+
+namespace rastrace {
+
+void add_trace_command(CLI::App& app) {
+  CLI::App* command = app.add_subcommand("trace", "Inspect and convert trace files (rastrace, CSV, din)");
+  command->require_subcommand(1);
+
+  CLI::App* info = command->add_subcommand("info", "Print a trace's metadata, record counts and size");
+  auto info_path = std::make_shared<std::string>();
+  auto info_format = std::make_shared<std::string>("md");
+  info->add_option("trace", *info_path, "Trace file (.rtrace)")->required();
+  info->add_option("--format", *info_format, "Table format: md, csv, latex or json");
+  info->footer("Example:\n  rastrace trace info frame.rtrace");
+  info->callback([=] {
+    TraceReader reader(*info_path);
+    const TraceMetadata& m = reader.metadata();
+    Table t;
+    t.title = "Trace " + std::filesystem::path(*info_path).filename().string();
+    t.parameters = {{"scene", m.scene}, {"ordering", m.ordering},
+                    {"resolution", std::to_string(m.width) + "x" + std::to_string(m.height)},
+                    {"filter", m.filter}, {"tool_version", m.tool_version},
+                    {"textures", static_cast<std::int64_t>(m.textures.size())}};
+    t.columns = {{"kind", "records of kind", 0}, {"records", "records", 0}, {"chunks", "chunks", 0}};
+    for (const RecordKind kind : {RecordKind::Vertex, RecordKind::Texel, RecordKind::Address}) {
+      std::int64_t chunks = 0;
+      for (const ChunkInfo& c : reader.chunks()) chunks += c.kind == kind;
+      t.add_row({to_string(kind), reader.records(kind), chunks});
+    }
+    const std::uint64_t records = reader.records(RecordKind::Vertex) + reader.records(RecordKind::Texel) +
+                                  reader.records(RecordKind::Address);
+    t.parameters.emplace_back("file_bytes", reader.file_bytes());
+    t.parameters.emplace_back("bytes_per_record", records ? double(reader.file_bytes()) / double(records) : 0.0);
+    std::cout << render_table(t, parse_table_format(*info_format));
+  });
+
+  CLI::App* convert = command->add_subcommand("convert", "Convert a trace: .rtrace <-> .csv, .din -> .rtrace or .csv");
+  auto in = std::make_shared<std::string>();
+  auto out = std::make_shared<std::string>();
+  convert->add_option("input", *in, "Trace file: .rtrace, .csv or .din")->required();
+  convert->add_option("output", *out, "Output: .rtrace or .csv (by extension)")->required();
+  convert->footer(
+      "Examples:\n"
+      "  rastrace trace convert frame.rtrace frame.csv\n"
+      "  rastrace trace convert frame.csv frame.rtrace\n"
+      "  rastrace trace convert gcc.din gcc.rtrace");
+  convert->callback([=] {
+    const std::string extension = std::filesystem::path(*out).extension().string();
+    const TraceSummary summary = summarize_trace(*in);
+    if (extension == ".csv") {
+      if (summary.format == TraceFileFormat::Container) {
+        TraceReader reader(*in);
+        write_file_atomically(*out, [&](std::ostream& o) { export_csv(reader, o); }, false);
+      } else {
+        // Through a temporary container: CSV export reads containers.
+        const std::string temporary = *out + ".rtrace.tmp";
+        {
+          TraceWriter writer(temporary, summary.metadata);
+          replay_file(*in, writer);
+        }
+        TraceReader reader(temporary);
+        write_file_atomically(*out, [&](std::ostream& o) { export_csv(reader, o); }, false);
+        std::filesystem::remove(temporary);
+      }
+    } else if (extension == ".rtrace") {
+      TraceWriter writer(*out, summary.metadata);
+      replay_file(*in, writer);
+    } else {
+      throw InputError("trace convert: output '" + *out + "': expected a .rtrace or .csv file name");
+    }
+    std::cout << "wrote " << *out << "\n";
+  });
+}
+
+}  // namespace rastrace

@@ -1,0 +1,162 @@
+#include "cache_sim/sweep.h"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "core/error.h"
+#include "core/progress.h"
+#include "core/units.h"
+#include "traces/replay_file.h"
+
+namespace rastrace {
+
+const char* to_string(SweepSource source) {
+  switch (source) {
+    case SweepSource::Texel: return "texel";
+    case SweepSource::VertexBuffer: return "vertex";
+    default: return "address";
+  }
+}
+
+SweepSource parse_sweep_source(const std::string& text) {
+  if (text == "texel") return SweepSource::Texel;
+  if (text == "vertex") return SweepSource::VertexBuffer;
+  if (text == "address") return SweepSource::Address;
+  throw InputError("unknown source '" + text + "': expected texel, vertex or address");
+}
+
+namespace {
+
+struct Job {
+  std::vector<std::size_t> rows;  // indices into the result rows
+  std::size_t layout = 0;
+};
+
+ReplayKinds kinds_for(SweepSource source) {
+  ReplayKinds kinds;
+  kinds.vertices = source == SweepSource::VertexBuffer;
+  kinds.texels = source == SweepSource::Texel;
+  kinds.addresses = source == SweepSource::Address;
+  return kinds;
+}
+
+}  // namespace
+
+SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsigned threads, bool show_progress) {
+  const TraceSummary summary = summarize_trace(trace_path);
+  if (spec.source == SweepSource::Texel && summary.has_counts && summary.texels == 0)
+    throw_in_file(trace_path, "the trace has no texel accesses: expected a texel trace (or choose --source vertex/address)");
+  if (spec.source == SweepSource::Address && summary.has_counts && summary.addresses == 0)
+    throw_in_file(trace_path, "the trace has no address records: expected a din import (or choose --source texel/vertex)");
+  if (spec.source == SweepSource::VertexBuffer && summary.has_counts && summary.vertices == 0)
+    throw_in_file(trace_path, "the trace has no vertex fetches");
+  if (spec.source == SweepSource::Texel) {
+    for (const LayoutSpec& layout : spec.layouts) TextureLayout check(layout, summary.metadata.textures);
+  }
+
+  SweepResult result;
+  const std::vector<LayoutSpec> layouts = spec.source == SweepSource::Texel ? spec.layouts : std::vector<LayoutSpec>{LayoutSpec{}};
+  std::vector<Job> groups;
+  for (std::size_t l = 0; l < layouts.size(); ++l)
+    for (const ReplacementPolicy policy : spec.policies)
+      for (const std::uint32_t line : spec.lines)
+        for (const std::uint32_t assoc : spec.assocs)
+          for (const std::uint64_t size : spec.sizes) {
+            const CacheConfig config{size, line, assoc, policy, spec.seed};
+            try {
+              validate(config);
+            } catch (const InputError& e) {
+              result.skipped.push_back(e.what());
+              continue;
+            }
+            SweepRow row;
+            row.cache = config;
+            row.layout = spec.source == SweepSource::Texel          ? layout_name(layouts[l])
+                         : spec.source == SweepSource::VertexBuffer ? "stride" + std::to_string(spec.stride)
+                                                                    : "-";
+            // One job per (layout, line): they share the address and line streams and the profile.
+            auto found = std::find_if(groups.begin(), groups.end(), [&](const Job& j) {
+              return j.layout == l && result.rows[j.rows.front()].cache.line_bytes == line;
+            });
+            if (found == groups.end()) {
+              groups.push_back({{}, l});
+              found = groups.end() - 1;
+            }
+            found->rows.push_back(result.rows.size());
+            result.rows.push_back(row);
+          }
+  if (result.rows.empty()) throw InputError("sweep: no valid cache configuration among the combinations given");
+
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  // Split big groups so every core has work; the split costs one more pass over the trace each.
+  std::vector<Job> jobs;
+  const std::size_t per_job = std::max<std::size_t>(1, (result.rows.size() + threads - 1) / threads);
+  for (const Job& group : groups)
+    for (std::size_t i = 0; i < group.rows.size(); i += per_job)
+      jobs.push_back({std::vector<std::size_t>(group.rows.begin() + static_cast<std::ptrdiff_t>(i),
+                                               group.rows.begin() + static_cast<std::ptrdiff_t>(std::min(group.rows.size(), i + per_job))),
+                      group.layout});
+
+  std::optional<Progress> progress;
+  if (show_progress) progress.emplace("sweep (" + std::to_string(result.rows.size()) + " caches)", jobs.size());
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  const auto work = [&] {
+    while (true) {
+      const std::size_t j = next.fetch_add(1);
+      if (j >= jobs.size()) return;
+      try {
+        const Job& job = jobs[j];
+        CacheBankConfig bank;
+        bank.three_c = spec.three_c;
+        for (const std::size_t r : job.rows) {
+          switch (spec.source) {
+            case SweepSource::Texel: bank.texture.push_back({result.rows[r].cache, layouts[job.layout]}); break;
+            case SweepSource::VertexBuffer: bank.vertex_buffer.push_back({result.rows[r].cache, spec.stride}); break;
+            case SweepSource::Address: bank.address.push_back(result.rows[r].cache); break;
+          }
+        }
+        LiveBankSink sink(bank, summary.metadata.textures);
+        replay_file(trace_path, sink, kinds_for(spec.source));
+        const auto& stats = spec.source == SweepSource::Texel          ? sink.texture_stats()
+                            : spec.source == SweepSource::VertexBuffer ? sink.vertex_buffer_stats()
+                                                                       : sink.address_stats();
+        for (std::size_t i = 0; i < job.rows.size(); ++i) result.rows[job.rows[i]].stats = stats[i];
+        if (progress) progress->advance();
+      } catch (...) {
+        std::lock_guard lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+        next = jobs.size();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < std::min<std::size_t>(threads, jobs.size()); ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  if (progress) progress->finish();
+  if (failure) std::rethrow_exception(failure);
+  return result;
+}
+
+std::vector<VertexSweepRow> run_vertex_sweep(const std::string& trace_path, const std::vector<VertexCachePolicy>& policies,
+                                             const std::vector<unsigned>& entries, bool flush_per_draw) {
+  CacheBankConfig bank;
+  bank.flush_vertex_cache_per_draw = flush_per_draw;
+  for (const VertexCachePolicy policy : policies)
+    for (const unsigned k : entries) bank.vertex.push_back({policy, k});
+  LiveBankSink sink(bank, {});
+  ReplayKinds kinds;
+  kinds.texels = kinds.addresses = false;
+  replay_file(trace_path, sink, kinds);
+  std::vector<VertexSweepRow> rows;
+  for (std::size_t i = 0; i < bank.vertex.size(); ++i) rows.push_back({bank.vertex[i], sink.vertex_stats()[i]});
+  return rows;
+}
+
+}  // namespace rastrace
