@@ -17,6 +17,9 @@ struct ReorderParams {
   VertexCachePolicy policy = VertexCachePolicy::Fifo;
   std::uint64_t seed = 1;
   double time_budget_seconds = 60.0;  // for iterative algorithms (local optimization)
+  // local: perturbation searches (one per face position visited); 0 = until no improvement is
+  // found. The primary, reproducible control; time_budget_seconds is only a safety cap.
+  std::uint64_t iteration_budget = 0;
   std::string texgroup_base = "strip";     // texgroup: the algorithm ordering each group
   std::string texgroup_regions = "auto";   // texgroup: auto, quadrant, chart or texture
 };
@@ -62,6 +65,7 @@ Ordering reorder_hilbert(const Mesh& mesh, const ReorderParams& params);
 Ordering reorder_grid(const Mesh& mesh, const ReorderParams& params);
 Ordering reorder_strip(const Mesh& mesh, const ReorderParams& params);
 Ordering reorder_greedy(const Mesh& mesh, const ReorderParams& params);
+Ordering reorder_local(const Mesh& mesh, const ReorderParams& params);
 
 // False when the algorithm cannot order this mesh: "grid" needs a make_grid grid (mesh.grid).
 // Tables skip such pairs; running one anyway throws InputError.

@@ -20,6 +20,7 @@ const std::vector<ReorderAlgorithm>& reorder_algorithms() {
       {"grid", "Castano 2009, optimal grid rendering (regular grids only)", reorder_grid},
       {"strip", "cache-unaware sequential strips with swaps (Evans et al. 1996 / NvTriStrip style)", reorder_strip},
       {"greedy", "Hoppe 1999, greedy strip-growing with lookahead cache simulation", reorder_greedy},
+      {"local", "Hoppe 1999, local optimization (reflect/insert perturbations) of the greedy order", reorder_local},
       {"texgroup", "Yang, Mitra, Huang: faces grouped by texture region, each group by a base algorithm",
        reorder_texgroup},
   };

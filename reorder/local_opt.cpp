@@ -1,0 +1,534 @@
+// Hoppe 1999, section 6: local optimization of the face order (see local_opt.h).
+#include "reorder/local_opt.h"
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <cstdint>
+#include <numeric>
+#include <string>
+
+#include "core/error.h"
+#include "core/progress.h"
+#include "reorder/greedy.h"
+#include "reorder/strip.h"
+
+namespace rastrace {
+
+namespace {
+
+constexpr int kCaches = 3;               // sizes k-1, k, k+1
+constexpr std::int64_t kStripCost = 6000;  // 6 bytes per strip, scaled by 1000
+
+std::uint64_t splitmix64(std::uint64_t& state) {
+  std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+// A FIFO of at most `cap` vertices for the short re-simulations (k is small: a scan is cheap).
+class SmallFifo {
+ public:
+  void reset(unsigned cap) {
+    cap_ = cap;
+    slots_.assign(cap, 0);
+    count_ = 0;
+    next_ = 0;
+  }
+  void clear() {
+    count_ = 0;
+    next_ = 0;
+  }
+  bool access(std::uint32_t v) {
+    for (unsigned i = 0; i < count_; ++i)
+      if (slots_[i] == v) return true;
+    push(v);
+    return false;
+  }
+  void push(std::uint32_t v) {
+    slots_[next_] = v;
+    next_ = next_ + 1 == cap_ ? 0 : next_ + 1;
+    if (count_ < cap_) ++count_;
+  }
+
+ private:
+  std::vector<std::uint32_t> slots_;
+  unsigned cap_ = 0, count_ = 0, next_ = 0;
+};
+
+// One perturbation as F' = concatenation of ranges of F (reversed or not), at most 5 pieces.
+struct Segment {
+  std::uint32_t lo = 0, hi = 0;  // F positions, inclusive
+  bool reversed = false;
+  std::uint32_t start = 0;  // F' position of its first face
+  std::uint32_t size() const { return hi - lo + 1; }
+};
+struct Perturbation {
+  enum Type : std::uint8_t { Reflect, Insert1, Insert2 } type = Reflect;
+  std::uint32_t x = 0, y = 0;
+  std::int64_t delta = 0;
+};
+
+class Local {
+ public:
+  Local(const Mesh& mesh, const MeshTopology& topology, const ReorderParams& params, std::vector<std::uint32_t>& order)
+      : mesh_(mesh), t_(topology), idx_(mesh.indices.data()), F_(order), m_(static_cast<std::uint32_t>(order.size())) {
+    const unsigned k = params.cache_size;
+    size_[0] = k > 1 ? k - 1 : 0;
+    size_[1] = k;
+    size_[2] = k + 1;
+    weight_[0] = k > 1 ? 3 : 0;
+    weight_[1] = 32000;
+    weight_[2] = 2;
+    pos_.resize(t_.face_count);
+    for (int c = 0; c < kCaches; ++c) {
+      fwd_[c].assign(t_.face_count, 0);
+      rev_[c].assign(t_.face_count, 0);
+      stamp_[c].assign(t_.vertex_count, 0);
+      fifo_[c].reset(std::max(size_[c], 1u));
+    }
+    fwd_cost_.assign(t_.face_count, 0);
+    rev_cost_.assign(t_.face_count, 0);
+    rev_prefix_.assign(m_ + 1, 0);
+    face_mark_.assign(t_.face_count, 0);
+    recompute();
+  }
+
+  std::int64_t cost() const { return cost_; }
+
+  void run(const ReorderParams& params, LocalStats& stats) {
+    stats.initial_cost = cost_;
+    if (m_ < 3) {
+      stats.final_cost = cost_;
+      stats.converged = true;
+      return;
+    }
+    std::vector<std::uint32_t> visit(t_.face_count);
+    std::iota(visit.begin(), visit.end(), 0u);
+    std::uint64_t state = params.seed;
+    for (std::size_t i = visit.size(); i > 1; --i) std::swap(visit[i - 1], visit[splitmix64(state) % i]);
+
+    const std::uint64_t budget = params.iteration_budget;
+    const auto start = std::chrono::steady_clock::now();
+    bool out_of_budget = false;
+    while (!out_of_budget) {
+      ++stats.passes;
+      Progress progress("local optimization, pass " + std::to_string(stats.passes),
+                        budget ? std::min<std::uint64_t>(budget - stats.iterations, m_) : m_);
+      bool improved = false;
+      for (const std::uint32_t f : visit) {
+        if (budget && stats.iterations >= budget) {
+          out_of_budget = true;
+          break;
+        }
+        if ((stats.iterations & 63) == 0 &&
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > params.time_budget_seconds) {
+          out_of_budget = true;
+          break;
+        }
+        ++stats.iterations;
+        progress.advance();
+        const std::uint32_t x = pos_[f];
+        if (pruned(x)) continue;
+        Perturbation best = best_from(x, stats);
+        if (best.delta >= 0) continue;
+        // Chase a locally better perturbation: from y, the best partner z; stop when it points
+        // back at x or stops improving.
+        for (int chase = 0; chase < 8; ++chase) {
+          const Perturbation next = best_from(best.y, stats);
+          if (next.delta >= best.delta || next.y == best.x) break;
+          best = next;
+        }
+        if (apply(best)) {
+          ++stats.applied;
+          improved = true;
+        } else {
+          ++stats.rejected;
+        }
+      }
+      if (!budget && !improved) {
+        stats.converged = true;
+        break;
+      }
+    }
+    stats.final_cost = cost_;
+  }
+
+ private:
+  std::uint32_t at(std::int64_t q) const { return q < 0 || q >= std::int64_t(m_) ? kNoFace : F_[std::size_t(q)]; }
+  bool continues(std::uint32_t a, std::uint32_t b) const {
+    return a != kNoFace && b != kNoFace && strip_continues(mesh_, t_, a, b);
+  }
+
+  // The vertices face f reads in the strip stream strip.h emits, given the two faces before it
+  // and the one after it: a strip's first face reads three (exit edge last), a face continuing
+  // a strip reads its new vertex, preceded by the repeated pivot when the strip swaps. The pivot
+  // matters: re-reading an evicted pivot shifts the whole FIFO.
+  unsigned accesses(std::uint32_t before_prev, std::uint32_t prev, std::uint32_t f, std::uint32_t next,
+                    std::uint32_t out[3]) const {
+    const std::uint32_t* v = idx_ + 3 * std::size_t(f);
+    if (continues(prev, f)) {
+      const std::uint32_t* p = idx_ + 3 * std::size_t(prev);
+      const std::uint32_t nv = not_in(v, p);
+      // w: the newer vertex of the strip's last edge (prev's new vertex, or the second vertex of
+      // prev's exit edge when prev started the strip).
+      std::uint32_t w;
+      if (continues(before_prev, prev)) {
+        w = not_in(p, idx_ + 3 * std::size_t(before_prev));
+      } else {
+        unsigned s = 0;
+        while (s < 2 && t_.neighbor(prev, s) != f) ++s;
+        w = p[(s + 1) % 3];
+      }
+      if (continues(f, next)) {
+        const int slot = edge_slot(v, w, nv);
+        if (slot < 0 || t_.neighbor(f, unsigned(slot)) != next) {
+          const std::uint32_t u = v[0] != nv && v[0] != w ? v[0] : v[1] != nv && v[1] != w ? v[1] : v[2];
+          out[0] = u;
+          out[1] = nv;
+          return 2;
+        }
+      }
+      out[0] = nv;
+      return 1;
+    }
+    if (continues(f, next))
+      for (unsigned s = 0; s < 3; ++s)
+        if (t_.neighbor(f, s) == next) {
+          out[0] = v[(s + 2) % 3];
+          out[1] = v[s];
+          out[2] = v[(s + 1) % 3];
+          return 3;
+        }
+    out[0] = v[0];
+    out[1] = v[1];
+    out[2] = v[2];
+    return 3;
+  }
+  // The first vertex of a that is not a vertex of b (a[0] if there is none).
+  static std::uint32_t not_in(const std::uint32_t* a, const std::uint32_t* b) {
+    for (int j = 0; j < 3; ++j)
+      if (a[j] != b[0] && a[j] != b[1] && a[j] != b[2]) return a[j];
+    return a[0];
+  }
+
+  std::int64_t weighted(const std::uint8_t masks[kCaches]) const {
+    std::int64_t cost = 0;
+    for (int c = 0; c < kCaches; ++c) cost += weight_[c] * std::popcount(unsigned(masks[c]));
+    return cost;
+  }
+
+  // Full simulation of F forwards and backwards: the stored miss bits, costs and prefix sums.
+  void recompute() {
+    for (std::uint32_t q = 0; q < m_; ++q) pos_[F_[q]] = q;
+    for (int dir = 0; dir < 2; ++dir) {
+      for (int c = 0; c < kCaches; ++c) clock_[c] += size_[c] + 2;  // invalidates every stamp
+      for (std::uint32_t i = 0; i < m_; ++i) {
+        const std::int64_t q = dir == 0 ? i : m_ - 1 - i;
+        const std::uint32_t f = F_[std::size_t(q)];
+        const std::uint32_t prev = at(dir == 0 ? q - 1 : q + 1), next = at(dir == 0 ? q + 1 : q - 1);
+        std::uint32_t list[3];
+        const unsigned n = accesses(at(dir == 0 ? q - 2 : q + 2), prev, f, next, list);
+        std::uint8_t masks[kCaches] = {0, 0, 0};
+        for (int c = 0; c < kCaches; ++c) {
+          if (size_[c] == 0) continue;
+          for (unsigned j = 0; j < n; ++j) {
+            std::uint32_t& s = stamp_[c][list[j]];
+            if (clock_[c] - s <= size_[c]) continue;
+            s = clock_[c]++;
+            masks[c] |= std::uint8_t(1u << j);
+          }
+          (dir == 0 ? fwd_ : rev_)[c][f] = masks[c];
+        }
+        (dir == 0 ? fwd_cost_ : rev_cost_)[f] = weighted(masks);
+      }
+    }
+    cost_ = 0;
+    for (std::uint32_t q = 0; q < m_; ++q) {
+      const std::uint32_t f = F_[q];
+      cost_ += fwd_cost_[f];
+      rev_prefix_[q + 1] = rev_prefix_[q] + rev_cost_[f] - fwd_cost_[f];
+      if (q == 0 || !continues(F_[q - 1], f)) cost_ += kStripCost;
+    }
+  }
+
+  // Loads the caches with the state just before F position p in the forward traversal (or, when
+  // reverse, just before p in the reverse traversal): the last `size` stored misses.
+  void load(std::int64_t p, bool reverse) {
+    for (int c = 0; c < kCaches; ++c) {
+      if (size_[c] == 0) continue;
+      std::uint32_t found[64];
+      unsigned n = 0;
+      const unsigned want = std::min(size_[c], 64u);
+      for (std::int64_t q = reverse ? p + 1 : p - 1; q >= 0 && q < std::int64_t(m_) && n < want; q += reverse ? 1 : -1) {
+        const std::uint32_t f = F_[std::size_t(q)];
+        const std::uint8_t mask = (reverse ? rev_ : fwd_)[c][f];
+        if (!mask) continue;
+        std::uint32_t list[3];
+        const unsigned count =
+            accesses(at(reverse ? q + 2 : q - 2), at(reverse ? q + 1 : q - 1), f, at(reverse ? q - 1 : q + 1), list);
+        for (unsigned j = count; j-- > 0 && n < want;)
+          if (mask & (1u << j)) found[n++] = list[j];
+      }
+      fifo_[c].clear();
+      for (unsigned j = n; j-- > 0;) fifo_[c].push(found[j]);
+    }
+  }
+
+  // Builds F' for a perturbation; returns false if it is not applicable.
+  bool segments(const Perturbation& p, Segment* seg, int& count) const {
+    const std::uint32_t x = p.x, y = p.y;
+    count = 0;
+    auto add = [&](std::int64_t lo, std::int64_t hi, bool reversed) {
+      if (lo > hi) return;
+      seg[count].lo = std::uint32_t(lo);
+      seg[count].hi = std::uint32_t(hi);
+      seg[count].reversed = reversed;
+      ++count;
+    };
+    const std::int64_t last = std::int64_t(m_) - 1;
+    switch (p.type) {
+      case Perturbation::Reflect: {
+        const std::int64_t lo = std::min(x, y), hi = std::max(x, y);
+        if (lo == hi) return false;
+        add(0, lo - 1, false);
+        add(lo, hi, true);
+        add(hi + 1, last, false);
+        break;
+      }
+      case Perturbation::Insert1:
+        if (x == y) return false;
+        if (y > x) {
+          add(0, std::int64_t(x) - 1, false);
+          add(x + 1, y, false);
+          add(x, x, false);
+          add(std::int64_t(y) + 1, last, false);
+        } else {
+          add(0, std::int64_t(y) - 1, false);
+          add(x, x, false);
+          add(y, std::int64_t(x) - 1, false);
+          add(std::int64_t(x) + 1, last, false);
+        }
+        break;
+      case Perturbation::Insert2:
+        if (x + 1 >= m_ || y == x || y == x + 1) return false;
+        if (y > x) {
+          add(0, std::int64_t(x) - 1, false);
+          add(x + 2, y, false);
+          add(x, x + 1, false);
+          add(std::int64_t(y) + 1, last, false);
+        } else {
+          add(0, std::int64_t(y) - 1, false);
+          add(x, x + 1, false);
+          add(y, std::int64_t(x) - 1, false);
+          add(std::int64_t(x) + 2, last, false);
+        }
+        break;
+    }
+    std::uint32_t start = 0;
+    for (int i = 0; i < count; ++i) {
+      seg[i].start = start;
+      start += seg[i].size();
+    }
+    return true;
+  }
+
+  static std::uint32_t face_in(const std::vector<std::uint32_t>& F, const Segment& s, std::uint32_t j) {
+    const std::uint32_t offset = j - s.start;
+    return F[s.reversed ? s.hi - offset : s.lo + offset];
+  }
+  std::uint32_t prime_at(const Segment* seg, int count, std::int64_t j) const {
+    if (j < 0 || j >= std::int64_t(m_)) return kNoFace;
+    int i = count - 1;
+    while (seg[i].start > j) --i;
+    return face_in(F_, seg[i], std::uint32_t(j));
+  }
+
+  // Cost change of a perturbation, by re-simulating only near its slice points.
+  std::int64_t evaluate(const Perturbation& p, LocalStats& stats) {
+    Segment seg[5];
+    int count = 0;
+    if (!segments(p, seg, count)) return 0;
+    ++stats.evaluations;
+    // Strip changes happen only at the slice points.
+    std::int64_t delta = 0;
+    for (int i = 0; i + 1 < count; ++i) {
+      const std::uint32_t a = face_in(F_, seg[i], seg[i].start + seg[i].size() - 1);
+      const std::uint32_t b = face_in(F_, seg[i + 1], seg[i + 1].start);
+      delta += continues(a, b) ? 0 : kStripCost;
+    }
+    {
+      Segment sorted[5];
+      std::copy(seg, seg + count, sorted);
+      for (int i = 1; i < count; ++i)  // insertion sort by F position (at most 4 pieces)
+        for (int k = i; k > 0 && sorted[k].lo < sorted[k - 1].lo; --k) std::swap(sorted[k], sorted[k - 1]);
+      for (int i = 0; i + 1 < count; ++i) delta -= continues(F_[sorted[i].hi], F_[sorted[i + 1].lo]) ? 0 : kStripCost;
+    }
+    // Misses: from the last untouched face (its successor changed) onwards; F' and F agree
+    // before it, so the caches start from F's stored state.
+    std::int64_t j = !seg[0].reversed && seg[0].lo == 0 ? std::int64_t(seg[0].hi) : 0;
+    int s = 0;
+    load(j, false);  // before F' position j: untouched prefix, so F's own state
+    unsigned sync[kCaches] = {0, 0, 0};
+    int sync_segment = s;
+    for (; j < std::int64_t(m_); ++j) {
+      while (s + 1 < count && seg[s + 1].start <= j) ++s;
+      if (s != sync_segment) {
+        sync_segment = s;
+        sync[0] = sync[1] = sync[2] = 0;
+      }
+      const Segment& g = seg[s];
+      const std::uint32_t offset = std::uint32_t(j) - g.start;
+      const std::int64_t q = g.reversed ? g.hi - offset : g.lo + offset;  // F position
+      const std::uint32_t f = F_[std::size_t(q)];
+      const std::uint32_t before_prev = prime_at(seg, count, j - 2);
+      const std::uint32_t prev = prime_at(seg, count, j - 1), next = prime_at(seg, count, j + 1);
+      std::uint32_t list[3];
+      const unsigned n = accesses(before_prev, prev, f, next, list);
+      std::uint8_t masks[kCaches] = {0, 0, 0};
+      for (int c = 0; c < kCaches; ++c) {
+        if (size_[c] == 0) continue;
+        for (unsigned a = 0; a < n; ++a)
+          if (!fifo_[c].access(list[a])) masks[c] |= std::uint8_t(1u << a);
+      }
+      delta += weighted(masks) - fwd_cost_[f];
+      const bool same_context = g.reversed
+                                    ? prev == at(q + 1) && next == at(q - 1) && before_prev == at(q + 2)
+                                    : prev == at(q - 1) && next == at(q + 1) && before_prev == at(q - 2);
+      bool same = same_context;
+      for (int c = 0; c < kCaches && same; ++c) same = masks[c] == (g.reversed ? rev_ : fwd_)[c][f];
+      if (!same) {
+        sync[0] = sync[1] = sync[2] = 0;
+        continue;
+      }
+      bool synced = true;
+      for (int c = 0; c < kCaches; ++c) {
+        sync[c] += unsigned(std::popcount(unsigned(masks[c])));
+        synced &= sync[c] >= size_[c];
+      }
+      if (!synced) continue;
+      // The caches agree with F's: the rest of this piece behaves as stored, up to its last face
+      // (whose successor changed).
+      if (s == count - 1 && !g.reversed && g.hi == m_ - 1) return delta;
+      const std::int64_t end = std::int64_t(g.start) + g.size() - 1;  // F' position of the piece's last face
+      if (j + 1 < end) {
+        if (g.reversed) {
+          // Skipped F positions lo+1 .. q-1 keep their reverse-traversal costs.
+          delta += rev_prefix_[std::size_t(q)] - rev_prefix_[std::size_t(g.lo) + 1];
+          load(g.lo, true);
+        } else {
+          load(g.hi, false);
+        }
+        j = end - 1;
+      }
+    }
+    return delta;
+  }
+
+  Perturbation best_from(std::uint32_t x, LocalStats& stats) {
+    Perturbation best;
+    best.x = x;
+    best.y = x;
+    best.delta = 0;
+    const std::uint32_t f = F_[x];
+    ++mark_;
+    auto consider = [&](std::uint32_t y) {
+      for (const Perturbation::Type type : {Perturbation::Reflect, Perturbation::Insert1, Perturbation::Insert2}) {
+        Perturbation p;
+        p.type = type;
+        p.x = x;
+        p.y = y;
+        p.delta = evaluate(p, stats);
+        if (p.delta < best.delta) best = p;
+      }
+    };
+    face_mark_[f] = mark_;
+    if (x > 0) {
+      face_mark_[F_[x - 1]] = mark_;
+      consider(x - 1);
+    }
+    if (x + 1 < m_) {
+      face_mark_[F_[x + 1]] = mark_;
+      consider(x + 1);
+    }
+    const std::uint32_t* v = idx_ + 3 * std::size_t(f);
+    for (int i = 0; i < 3; ++i)
+      for (const std::uint32_t g : t_.faces_of_vertex(v[i])) {
+        if (face_mark_[g] == mark_) continue;
+        face_mark_[g] = mark_;
+        consider(pos_[g]);
+      }
+    return best;
+  }
+
+  bool pruned(std::uint32_t x) const {
+    const std::uint32_t f = F_[x];
+    const std::uint32_t prev = at(std::int64_t(x) - 1), next = at(std::int64_t(x) + 1);
+    if (!continues(prev, f) || !continues(f, next)) return false;  // strip ends are always tried
+    const int misses = std::popcount(unsigned(fwd_[1][prev])) + std::popcount(unsigned(fwd_[1][f])) +
+                       std::popcount(unsigned(fwd_[1][next]));
+    return misses < 3;
+  }
+
+  // Applies p, then checks the true cost; undoes it if the cost did not drop.
+  bool apply(const Perturbation& p) {
+    Segment seg[5];
+    int count = 0;
+    if (!segments(p, seg, count)) return false;
+    const std::int64_t before = cost_;
+    scratch_.resize(m_);
+    for (int i = 0; i < count; ++i)
+      for (std::uint32_t j = seg[i].start; j < seg[i].start + seg[i].size(); ++j) scratch_[j] = face_in(F_, seg[i], j);
+    F_.swap(scratch_);
+    recompute();
+    if (cost_ < before) return true;
+    F_.swap(scratch_);
+    recompute();
+    return false;
+  }
+
+  const Mesh& mesh_;
+  const MeshTopology& t_;
+  const std::uint32_t* idx_;
+  std::vector<std::uint32_t>& F_;
+  std::uint32_t m_;
+  unsigned size_[kCaches];
+  std::int64_t weight_[kCaches];
+  std::vector<std::uint32_t> pos_;
+  std::vector<std::uint8_t> fwd_[kCaches], rev_[kCaches];  // miss bits per face, in access order
+  std::vector<std::int64_t> fwd_cost_, rev_cost_;          // weighted misses per face
+  std::vector<std::int64_t> rev_prefix_;                   // prefix sums over F of rev - fwd cost
+  std::vector<std::uint32_t> stamp_[kCaches];
+  std::uint32_t clock_[kCaches] = {1u << 20, 1u << 20, 1u << 20};
+  SmallFifo fifo_[kCaches];
+  std::vector<std::uint32_t> face_mark_;
+  std::uint32_t mark_ = 0;
+  std::vector<std::uint32_t> scratch_;
+  std::int64_t cost_ = 0;
+};
+
+}  // namespace
+
+void hoppe_local_optimize(const Mesh& mesh, const MeshTopology& topology, const ReorderParams& params,
+                          std::vector<std::uint32_t>& order, LocalStats* stats) {
+  if (params.cache_size == 0) throw InputError("local: cache size 0: expected at least 1 entry");
+  if (order.size() != topology.face_count)
+    throw InputError("local: order has " + std::to_string(order.size()) + " faces, mesh has " +
+                     std::to_string(topology.face_count));
+  LocalStats local_stats;
+  if (params.policy == VertexCachePolicy::Fifo) {
+    Local local(mesh, topology, params, order);
+    local.run(params, local_stats);
+  }
+  if (stats) *stats = local_stats;
+}
+
+Ordering reorder_local(const Mesh& mesh, const ReorderParams& params) {
+  const MeshTopology topology = build_mesh_topology(mesh);
+  std::vector<std::uint32_t> order = hoppe_greedy_order(mesh, topology, params);
+  hoppe_local_optimize(mesh, topology, params, order);
+  return strip_ordering(mesh, topology, std::move(order));
+}
+
+}  // namespace rastrace
