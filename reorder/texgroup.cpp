@@ -68,23 +68,11 @@ std::vector<std::uint32_t> uv_charts(const Mesh& mesh, const std::vector<std::ui
   return chart;
 }
 
-// Appends one group's strip to the stream, keeping each triangle's winding.
+// Appends one group's strip to the stream after a restart. 0xFFFFFFFF is GL's fixed restart
+// index for 32-bit indices and never a vertex id, so every strip stream can use it.
 void append_strip(Ordering& out, const Ordering& group) {
   if (group.indices.empty()) return;
-  if (out.indices.empty()) {
-    out.indices = group.indices;
-    return;
-  }
-  if (group.restart_index != kNoRestart) {
-    out.indices.push_back(group.restart_index);
-  } else {
-    // Stitch with degenerates: repeat the last index and the next first one. The next strip's
-    // first triangle must land on an even position of the joined strip to keep its winding.
-    const std::size_t before = out.indices.size();
-    out.indices.push_back(out.indices.back());
-    out.indices.push_back(group.indices.front());
-    if (before % 2 == 1) out.indices.push_back(group.indices.front());
-  }
+  if (!out.indices.empty()) out.indices.push_back(group.restart_index);
   out.indices.insert(out.indices.end(), group.indices.begin(), group.indices.end());
 }
 
