@@ -1,0 +1,91 @@
+// `rastrace render` and `rastrace compare` as a user runs them.
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/test_data.h"
+
+namespace rastrace {
+namespace {
+
+struct CommandRun {
+  int status;
+  std::string out;
+};
+
+CommandRun run(const std::string& arguments) {
+  const std::string command = testing::rastrace_binary() + " " + arguments + " 2>&1";
+  FILE* pipe = ::popen(command.c_str(), "r");
+  CommandRun result{-1, {}};
+  if (!pipe) return result;
+  char buffer[4096];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, n);
+  const int status = ::pclose(pipe);
+  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+std::string temp(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("rastrace-cli-" + std::to_string(::getpid()) + "-" + name)).string();
+}
+
+TEST(RenderCommand, PrintsTheFrameCostsAsJsonAndWritesTheImageAndTrace) {
+  const std::string image = temp("grid.png"), trace = temp("grid.rtrace");
+  const CommandRun r = run("render builtin:grid --size 160x120 -o " + image + " --trace " + trace +
+                    " --raster tiled8 --vcache fifo:16 --tcache 8KiB,64B,2way,lru --layout morton --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const nlohmann::json rows = nlohmann::json::parse(r.out);
+  ASSERT_EQ(rows.size(), 1u);
+  const nlohmann::json& row = rows[0];
+  EXPECT_EQ(row["triangles"], 2048);          // the 32x32 grid
+  EXPECT_EQ(row["vertices_shaded"], 2112);    // scanline grid, FIFO 16: 33 * 64
+  EXPECT_NEAR(row["acmr"].get<double>(), 1.031, 0.0005);
+  EXPECT_GT(row["fragments_shaded"].get<std::int64_t>(), 5000);
+  EXPECT_GT(row["texel_accesses"].get<std::int64_t>(), 4 * row["fragments_shaded"].get<std::int64_t>());
+  EXPECT_GT(row["texture_misses"].get<std::int64_t>(), 0);
+  EXPECT_NEAR(row["bytes_per_fragment"].get<double>(),
+              row["texture_bytes"].get<double>() / row["fragments_shaded"].get<double>(), 1e-9);
+  EXPECT_EQ(row["layout"], "morton");
+  EXPECT_TRUE(std::filesystem::exists(image));
+  EXPECT_GT(std::filesystem::file_size(trace), 1000u);
+  std::filesystem::remove(image);
+  std::filesystem::remove(trace);
+}
+
+TEST(RenderCommand, BadOptionsAreErrorsAndLeaveNoFile) {
+  const std::string image = temp("bad.png");
+  CommandRun r = run("render builtin:grid -o " + image + " --tcache 16KiB,64B,4,lru");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.out.find("associativity '4'"), std::string::npos) << r.out;
+  r = run("render builtin:grid -o " + image + " --raster zigzag");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.out.find("expected scanline or tiled8"), std::string::npos) << r.out;
+  r = run("render builtin:grid -o " + image + " --size 0x10");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_FALSE(std::filesystem::exists(image));
+}
+
+TEST(CompareCommand, GridAgainstSoftpipeMeetsTheAcceptanceThresholds) {
+  const std::string diff = temp("diff.png");
+  const CommandRun r = run("compare builtin:grid --size 160x120 --driver softpipe -o " + diff + " --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const nlohmann::json row = nlohmann::json::parse(r.out).at(0);
+  EXPECT_EQ(row["driver"], "softpipe");
+  EXPECT_EQ(row["pixels"], 160 * 120);
+  EXPECT_GT(row["covered"].get<std::int64_t>(), 5000);
+  EXPECT_LE(row["diff_gt_2"].get<double>(), 0.01);
+  EXPECT_LE(row["diff_gt_8"].get<double>(), row["diff_gt_2"].get<double>());
+  EXPECT_GE(row["psnr"].get<double>(), 40.0);
+  EXPECT_EQ(row["coverage_differs_off_edge"], 0);
+  EXPECT_TRUE(std::filesystem::exists(diff));
+  std::filesystem::remove(diff);
+  EXPECT_EQ(run("compare builtin:grid --driver swrast").status, 1);
+}
+
+}  // namespace
+}  // namespace rastrace
