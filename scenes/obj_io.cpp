@@ -117,7 +117,7 @@ struct Corner {
 };
 
 // Resolves one OBJ index (1-based, or negative from the end) against the count defined so far.
-std::int64_t resolve_index(TextLines& lines, std::string_view token, std::size_t defined, const char* kind) {
+std::int64_t resolve_index(TextLines& lines, std::string_view token, std::size_t defined, const char* kind, const char* kinds) {
   std::int64_t index = 0;
   if (!parse_number(token, index))
     lines.fail(std::string("expected a ") + kind + " index, found " + describe_token(token));
@@ -125,8 +125,8 @@ std::int64_t resolve_index(TextLines& lines, std::string_view token, std::size_t
   if (index > 0 && index <= count) return index - 1;
   if (index < 0 && -index <= count) return count + index;
   if (index == 0) lines.fail(std::string(kind) + " index 0: OBJ indices start at 1 (or count back from -1)");
-  lines.fail(std::string(kind) + " index " + std::to_string(index) + " out of range: " + std::to_string(count) + " " + kind +
-             (count == 1 ? "" : "s") + " defined so far");
+  lines.fail(std::string(kind) + " index " + std::to_string(index) + " out of range: " + std::to_string(count) + " " +
+             (count == 1 ? kind : kinds) + " defined so far");
 }
 
 }  // namespace
@@ -168,15 +168,15 @@ Mesh load_obj(const std::string& path) {
       for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest)) {
         Corner corner{-1, -1, -1};
         const std::size_t slash = token.find('/');
-        corner.v = resolve_index(lines, token.substr(0, slash), positions.size(), "vertex");
+        corner.v = resolve_index(lines, token.substr(0, slash), positions.size(), "vertex", "vertices");
         if (slash != std::string_view::npos) {
           std::string_view tail = token.substr(slash + 1);
           const std::size_t slash2 = tail.find('/');
           const std::string_view vt = tail.substr(0, slash2);
-          if (!vt.empty()) corner.vt = resolve_index(lines, vt, texcoords.size(), "texture coordinate");
+          if (!vt.empty()) corner.vt = resolve_index(lines, vt, texcoords.size(), "texture coordinate", "texture coordinates");
           if (slash2 != std::string_view::npos) {
             const std::string_view vn = tail.substr(slash2 + 1);
-            if (!vn.empty()) corner.vn = resolve_index(lines, vn, normals.size(), "normal");
+            if (!vn.empty()) corner.vn = resolve_index(lines, vn, normals.size(), "normal", "normals");
           }
         }
         polygon.push_back(corner);
