@@ -46,6 +46,9 @@ struct ReferenceImage {
   std::string renderer;            // GL_RENDERER, e.g. "softpipe" or "llvmpipe (LLVM 15.0.6, 256 bits)"
   double best_frame_seconds = 0.0;  // the fastest of `frames` frames, glFinish included
   double first_frame_seconds = 0.0;
+  // The fastest frame in CPU time of the child process (all its threads): with llvmpipe's
+  // LP_NUM_THREADS=0 this is single-threaded work, comparable under a loaded machine.
+  double best_frame_cpu_seconds = 0.0;
 };
 
 // Throws InputError if the scene is invalid and std::runtime_error if OSMesa fails (the message

@@ -25,19 +25,29 @@ struct CrossCheck {
   ImageDifference softpipe, llvmpipe;
 };
 
-RenderOptions our_options(const SamplerState& sampler) {
+// Culling and lighting of a cross-check (the same for both renderers).
+struct FixedFunction {
+  CullMode cull = CullMode::None;
+  Lighting lighting;
+};
+
+RenderOptions our_options(const SamplerState& sampler, const FixedFunction& state) {
   RenderOptions options;
   options.debug_planes = true;
   options.clear_colour = kClear;
   options.pipeline.raster.sampler = sampler;
+  options.pipeline.cull = state.cull;
+  options.pipeline.lighting = state.lighting;
   return options;
 }
 
 ImageDifference against(const Scene& scene, const RenderResult& ours, const SamplerState& sampler,
-                        ReferenceDriver driver) {
+                        const FixedFunction& state, ReferenceDriver driver) {
   ReferenceOptions options;
   options.driver = driver;
   options.sampler = sampler;
+  options.cull = state.cull;
+  options.lighting = state.lighting;
   options.clear_colour = kClear;
   const ReferenceImage reference = render_reference(scene, options);
   const Framebuffer& fb = ours.framebuffer;
@@ -64,14 +74,15 @@ ImageDifference against(const Scene& scene, const RenderResult& ours, const Samp
 // takes the largest derivative component (equation 8.7's bound), llvmpipe the vector lengths
 // (equation 8.6, rastrace's default). rastrace draws the scene with each driver's formula and
 // is compared with that driver; the other pairings are printed for the record.
-CrossCheck cross_check(const Scene& scene, SamplerState sampler, EventSink* sink = nullptr) {
+CrossCheck cross_check(const Scene& scene, SamplerState sampler, EventSink* sink = nullptr,
+                       const FixedFunction& state = {}) {
   sampler.lod = LodFormula::Lengths;
-  CrossCheck c{render_scene(scene, our_options(sampler), sink), {}, {}};
-  c.llvmpipe = against(scene, c.ours, sampler, ReferenceDriver::Llvmpipe);
+  CrossCheck c{render_scene(scene, our_options(sampler, state), sink), {}, {}};
+  c.llvmpipe = against(scene, c.ours, sampler, state, ReferenceDriver::Llvmpipe);
   SamplerState max_component = sampler;
   max_component.lod = LodFormula::MaxComponent;
-  const RenderResult ours_max = render_scene(scene, our_options(max_component), nullptr);
-  c.softpipe = against(scene, ours_max, max_component, ReferenceDriver::Softpipe);
+  const RenderResult ours_max = render_scene(scene, our_options(max_component, state), nullptr);
+  c.softpipe = against(scene, ours_max, max_component, state, ReferenceDriver::Softpipe);
   return c;
 }
 
@@ -143,6 +154,31 @@ TEST(OsmesaCrossCheck, BunnyWithCheckerTextureMatchesOsmesa) {
   const CrossCheck c = cross_check(scene, SamplerState{});
   EXPECT_EQ(c.ours.pipeline.triangles, 75408u);
   expect_textured_acceptance(c);
+}
+
+TEST(OsmesaCrossCheck, LitBunnyWithBackFaceCullingMatchesOsmesa) {
+  Scene scene = testing::bunny_checker_scene(200, 200);
+  scene.name = "bunny00 lit culled";
+  FixedFunction state;
+  state.cull = CullMode::Back;
+  state.lighting.enabled = true;
+  state.lighting.direction = glm::vec3(0.3f, 0.5f, 1.0f);
+  state.lighting.ambient = 0.2f;
+  const CrossCheck c = cross_check(scene, parse_filter("linear_mipmap_nearest"), nullptr, state);
+  EXPECT_GT(c.ours.pipeline.culled, 30000u);  // about half of a closed mesh faces away
+  expect_textured_acceptance(c);
+}
+
+TEST(OsmesaCrossCheck, NearestFiltersWithClampToEdgeMatchOsmesa) {
+  Scene scene = testing::grazing_plane_scene();
+  scene.name = "grazing plane nearest";
+  for (const char* filter : {"nearest", "nearest_mipmap_nearest"}) {
+    SamplerState sampler = parse_filter(filter);
+    sampler.wrap_s = sampler.wrap_t = TextureWrap::ClampToEdge;
+    const CrossCheck c = cross_check(scene, sampler);
+    EXPECT_GE(c.softpipe.psnr, 40.0) << filter;
+    EXPECT_EQ(c.softpipe.coverage_differs_off_edge, 0u);
+  }
 }
 
 }  // namespace
