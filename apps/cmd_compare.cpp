@@ -2,8 +2,9 @@
 // rastrace and with Mesa's OSMesa (the same matrices, viewport, depth test, culling, light,
 // textures uploaded level by level from rastrace's mip chains, filters and wraps) and reports how
 // far apart the images are: the fraction of covered pixels differing by more than 1, 2 and 8 (of
-// 255) in any channel, PSNR, and coverage differences (split by whether the pixel centre lies
-// exactly on a triangle edge, where the drivers' fill rules legitimately differ).
+// 255) in any channel, PSNR, and coverage differences, split into centres exactly on a triangle
+// edge (the drivers' fill rules legitimately differ), centres within 1/256 pixel of one (softpipe
+// does not snap vertices to the 1/256 grid as rastrace and llvmpipe do) and the others.
 //
 // --lod auto (the default) draws rastrace's image with the LOD formula the driver implements:
 // softpipe takes the largest derivative component (GL eq. 8.7), llvmpipe the vector lengths
@@ -78,6 +79,7 @@ void run_compare(CompareCommand command) {
                    {"pixels", "pixels", 0},
                    {"covered", "covered", 0},
                    {"coverage_differs", "coverage differs", 0},
+                   {"coverage_differs_near_edge", "... near edges", 0},
                    {"coverage_differs_off_edge", "... off edges", 0},
                    {"diff_gt_1", "> 1/255", 4},
                    {"diff_gt_2", "> 2/255", 4},
@@ -86,7 +88,8 @@ void run_compare(CompareCommand command) {
                    {"psnr", "PSNR dB", 2},
                    {"psnr_image", "image PSNR dB", 2}};
   auto db = [](double value) { return std::isfinite(value) ? TableCell(value) : TableCell("inf"); };
-  table.add_row({command.driver, d.pixels, d.covered, d.coverage_differs, d.coverage_differs_off_edge,
+  table.add_row({command.driver, d.pixels, d.covered, d.coverage_differs, d.coverage_differs_near_edge,
+                 d.coverage_differs_off_edge,
                  d.fraction(d.diff_gt_1), d.fraction(d.diff_gt_2), d.fraction(d.diff_gt_8), d.max_difference, db(d.psnr),
                  db(d.psnr_image)});
   std::cout << render_table(table, format);

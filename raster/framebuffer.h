@@ -30,7 +30,8 @@ class Framebuffer {
   // Times a fragment passed the depth test and was written (debug planes only).
   std::uint16_t* write_count() { return write_count_.data(); }
   const std::uint16_t* write_count() const { return write_count_.data(); }
-  // 1 where the centre lies exactly on an edge of a rasterized triangle (debug planes only).
+  // 1 where the centre lies exactly on an edge of a rasterized (snapped) triangle, 2 where it lies
+  // within 1/256 pixel of one (the snapping distance), 0 elsewhere (debug planes only).
   std::uint8_t* centre_on_edge() { return centre_on_edge_.data(); }
   const std::uint8_t* centre_on_edge() const { return centre_on_edge_.data(); }
 

@@ -37,6 +37,7 @@ struct Rasterizer::Setup {
   std::int64_t step_x[3], step_y[3];  // edge function change per pixel to the right / down
   std::int64_t bias[3];               // 0 for owned (top or left) edges, -1 for the others
   std::int64_t origin[3];             // edge functions at the centre of pixel (x0, y0)
+  double length[3];                   // edge lengths in 1/256 pixels (debug planes only)
   int x0, y0, x1, y1;                 // pixels to visit (x0, y0 even), inclusive, in the image
   float inv_area;
   float base[kAttributes], d1[kAttributes], d2[kAttributes];
@@ -94,6 +95,7 @@ void Rasterizer::draw(const RasterVertex& va, const RasterVertex& vb, const Rast
     const bool top = dy == 0 && dx > 0;
     const bool left = dy < 0;
     s.bias[k] = (top || left) ? 0 : -1;
+    s.length[k] = std::sqrt(static_cast<double>(dx) * static_cast<double>(dx) + static_cast<double>(dy) * static_cast<double>(dy));
   }
   s.inv_area = static_cast<float>(1.0 / static_cast<double>(area));
 
@@ -160,9 +162,20 @@ void Rasterizer::traverse(const Setup& s, const TriangleState& state) {
       for (int i = 0; i < 4; ++i) {
         const int x = qx + (i & 1), y = qy + (i >> 1);
         if (x >= width || y >= height) continue;
+        // 1: exactly on an edge of the snapped triangle. 2: within 1/256 pixel of an edge, where
+        // a rasterizer that does not snap vertices (softpipe) may decide the other way.
+        std::uint8_t& flag = framebuffer_.centre_on_edge()[static_cast<std::size_t>(y) * width + x];
         const bool closed = pe[0][i] >= 0 && pe[1][i] >= 0 && pe[2][i] >= 0;
-        if (closed && (pe[0][i] == 0 || pe[1][i] == 0 || pe[2][i] == 0))
-          framebuffer_.centre_on_edge()[static_cast<std::size_t>(y) * width + x] = 1;
+        if (closed && (pe[0][i] == 0 || pe[1][i] == 0 || pe[2][i] == 0)) {
+          flag = 1;
+        } else if (flag == 0) {
+          for (int k = 0; k < 3; ++k) {
+            const bool near = std::fabs(static_cast<double>(pe[k][i])) <= s.length[k];
+            const bool inside_others = pe[(k + 1) % 3][i] >= -static_cast<std::int64_t>(s.length[(k + 1) % 3]) &&
+                                       pe[(k + 2) % 3][i] >= -static_cast<std::int64_t>(s.length[(k + 2) % 3]);
+            if (near && inside_others) flag = 2;
+          }
+        }
       }
     }
     if (!mask) return;

@@ -36,7 +36,8 @@ ImageDifference compare_images(int width, int height, const std::uint8_t* ours, 
     ++d.covered;
     if (covered_a != covered_b) {
       ++d.coverage_differs;
-      if (centre_on_edge && !centre_on_edge[p]) ++d.coverage_differs_off_edge;
+      if (centre_on_edge && centre_on_edge[p] == 2) ++d.coverage_differs_near_edge;
+      if (centre_on_edge && centre_on_edge[p] == 0) ++d.coverage_differs_off_edge;
     }
     int largest = 0;
     for (int c = 0; c < 4; ++c) largest = std::max(largest, std::abs(int(a[c]) - int(b[c])));
