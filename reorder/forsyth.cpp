@@ -62,13 +62,16 @@ Ordering reorder_forsyth(const Mesh& mesh, const ReorderParams& /*params*/) {
   const std::vector<std::uint32_t>& offsets = topology.vertex_face_offsets;
   std::vector<std::uint32_t> live(vertex_count);
   for (std::uint32_t v = 0; v < vertex_count; ++v) live[v] = offsets[v + 1] - offsets[v];
-  std::vector<int> position(vertex_count, -1);
   std::vector<float> vertex_score(vertex_count);
   for (std::uint32_t v = 0; v < vertex_count; ++v) vertex_score[v] = tables.score(-1, live[v]);
-  std::vector<float> face_score(face_count, 0.0f);
   std::vector<std::uint8_t> emitted(face_count, 0);
-  for (std::uint32_t v = 0; v < vertex_count; ++v)
-    for (std::uint32_t i = offsets[v]; i < offsets[v + 1]; ++i) face_score[faces[i]] += vertex_score[v];
+  // A triangle's score is summed when it is looked at, from its vertices' scores (a degenerate
+  // triangle counts its repeated vertex twice): cheaper than pushing every vertex score change
+  // to its triangles, since only the triangles of the ~32 cached vertices are ever looked at.
+  const auto face_score = [&](std::uint32_t f) {
+    const std::uint32_t* c = idx + 3 * std::size_t(f);
+    return vertex_score[c[0]] + vertex_score[c[1]] + vertex_score[c[2]];
+  };
 
   std::vector<std::uint32_t> evicted_stack;
   evicted_stack.reserve(vertex_count);
@@ -78,12 +81,19 @@ Ordering reorder_forsyth(const Mesh& mesh, const ReorderParams& /*params*/) {
 
   Ordering ordering;
   ordering.face_order.reserve(face_count);
-  ordering.indices.reserve(mesh.indices.size());
+  ordering.indices.resize(mesh.indices.size());
+  std::uint32_t* index_out = ordering.indices.data();
 
   // Forsyth starts from the best triangle of the whole mesh.
   std::int64_t best = face_count > 0 ? 0 : -1;
-  for (std::uint32_t f = 1; f < face_count; ++f)
-    if (face_score[f] > face_score[best]) best = f;
+  float best_score = face_count > 0 ? face_score(0) : 0.0f;
+  for (std::uint32_t f = 1; f < face_count; ++f) {
+    const float score = face_score(f);
+    if (score > best_score) {
+      best_score = score;
+      best = f;
+    }
+  }
   std::uint32_t input_cursor = 0;
 
   while (best >= 0) {
@@ -91,7 +101,9 @@ Ordering reorder_forsyth(const Mesh& mesh, const ReorderParams& /*params*/) {
     emitted[face] = 1;
     ordering.face_order.push_back(face);
     const std::uint32_t* corners = idx + 3 * std::size_t(face);
-    ordering.indices.insert(ordering.indices.end(), corners, corners + 3);
+    *index_out++ = corners[0];
+    *index_out++ = corners[1];
+    *index_out++ = corners[2];
 
     // New LRU: the triangle's distinct vertices first, then the old entries.
     int next_size = 0;
@@ -114,29 +126,23 @@ Ordering reorder_forsyth(const Mesh& mesh, const ReorderParams& /*params*/) {
       if (v != corners[0] && v != corners[1] && v != corners[2]) next_cache[next_size++] = v;
     }
 
-    // Rescore every vertex whose position or live count changed, and its live faces.
     for (int i = 0; i < next_size; ++i) {
       const std::uint32_t v = next_cache[i];
       const int p = i < kModelCache ? i : -1;
-      position[v] = p;
       if (p < 0 && live[v] > 0) evicted_stack.push_back(v);
-      const float score = tables.score(p, live[v]);
-      const float delta = score - vertex_score[v];
-      if (delta != 0.0f) {
-        vertex_score[v] = score;
-        for (std::uint32_t j = offsets[v], end = offsets[v] + live[v]; j < end; ++j) face_score[faces[j]] += delta;
-      }
+      vertex_score[v] = tables.score(p, live[v]);
     }
     cache_size = std::min(next_size, kModelCache);
     for (int i = 0; i < cache_size; ++i) cache[i] = next_cache[i];
 
     best = -1;
-    float best_score = 0.0f;
+    best_score = 0.0f;
     for (int i = 0; i < cache_size; ++i) {
       const std::uint32_t v = cache[i];
       for (std::uint32_t j = offsets[v], end = offsets[v] + live[v]; j < end; ++j) {
-        if (face_score[faces[j]] > best_score) {
-          best_score = face_score[faces[j]];
+        const float score = face_score(faces[j]);
+        if (score > best_score) {
+          best_score = score;
           best = faces[j];
         }
       }
@@ -145,8 +151,13 @@ Ordering reorder_forsyth(const Mesh& mesh, const ReorderParams& /*params*/) {
     while (best < 0 && !evicted_stack.empty()) {
       const std::uint32_t v = evicted_stack.back();
       evicted_stack.pop_back();
-      for (std::uint32_t j = offsets[v], end = offsets[v] + live[v]; j < end; ++j)
-        if (best < 0 || face_score[faces[j]] > face_score[best]) best = faces[j];
+      for (std::uint32_t j = offsets[v], end = offsets[v] + live[v]; j < end; ++j) {
+        const float score = face_score(faces[j]);
+        if (best < 0 || score > best_score) {
+          best_score = score;
+          best = faces[j];
+        }
+      }
     }
     if (best >= 0) continue;
     while (input_cursor < face_count && emitted[input_cursor]) ++input_cursor;
