@@ -25,6 +25,13 @@ class LruStackProfile {
   LruStackProfile();
   void access(std::uint64_t line) {
     ++accesses_;
+    // Re-touching the most recent line (distance 0, most texel accesses) changes no stack order:
+    // count it and leave the tree alone.
+    if (line == last_line_ && accesses_ > 1) {
+      ++histogram_[0];
+      return;
+    }
+    last_line_ = line;
     bool inserted;
     std::uint32_t& id = map_.find_or_insert(line, static_cast<std::uint32_t>(last_use_.size()), inserted);
     if (inserted) {
@@ -76,7 +83,8 @@ class LruStackProfile {
   std::uint64_t live_ = 0;
   std::uint64_t accesses_ = 0;
   std::uint64_t compulsory_ = 0;
-  std::vector<std::uint64_t> histogram_;
+  std::vector<std::uint64_t> histogram_ = std::vector<std::uint64_t>(1, 0);
+  std::uint64_t last_line_ = 0;
 };
 
 class SetAssocLruProfile {

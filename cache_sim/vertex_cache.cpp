@@ -40,10 +40,55 @@ bool VertexCache::access_lru(std::uint32_t vertex) {
   return false;
 }
 
+namespace {
+
+// The common case (FIFO over a triangle list) in one flat pass, meshoptimizer style: a vertex's
+// timestamp says both whether it is cached and whether it was ever seen (0 = never).
+VertexStreamStats simulate_fifo_list(std::span<const std::uint32_t> indices, unsigned entries) {
+  VertexStreamStats stats;
+  std::vector<std::uint32_t> stamps(1024, 0);
+  std::uint32_t clock = entries + 1;
+  std::uint64_t misses = 0, vertices = 0, degenerate = 0;
+  const auto lookup = [&](std::uint32_t v) {
+    if (v >= stamps.size()) [[unlikely]]
+      stamps.resize(std::max<std::size_t>(std::size_t{v} + 1, stamps.size() * 2), 0);
+    // Branch-free: a miss is data-dependent and mispredicts often; selects do not.
+    std::uint32_t& stamp = stamps[v];
+    const std::uint32_t old = stamp;
+    const std::uint32_t miss = clock - old > entries;
+    vertices += miss & (old == 0);
+    stamp = miss ? clock : old;
+    clock += miss;
+    misses += miss;
+  };
+  const std::size_t whole = indices.size() - indices.size() % 3;
+  const std::uint32_t* p = indices.data();
+  for (std::size_t i = 0; i < whole; i += 3) {
+    const std::uint32_t a = p[i], b = p[i + 1], c = p[i + 2];
+    degenerate += (a == b) | (b == c) | (a == c);
+    lookup(a);
+    lookup(b);
+    lookup(c);
+  }
+  for (std::size_t i = whole; i < indices.size(); ++i) lookup(p[i]);  // a trailing partial triangle is still fetched
+  stats.lookups = stats.indices_sent = indices.size();
+  stats.misses = misses;
+  stats.vertices = vertices;
+  stats.degenerate = degenerate;
+  stats.triangles = whole / 3 - degenerate;
+  return stats;
+}
+
+}  // namespace
+
 VertexStreamStats simulate_vertex_stream(std::span<const std::uint32_t> indices, PrimitiveType type,
                                          VertexCachePolicy policy, unsigned entries,
                                          std::uint32_t restart_index) {
   VertexCache cache(policy, entries);
+  // 2^32 - entries misses would wrap the 32-bit clock: longer streams take the general path.
+  if (type == PrimitiveType::TriangleList && policy == VertexCachePolicy::Fifo &&
+      indices.size() < std::size_t{0x7FFFFFFF} - entries)
+    return simulate_fifo_list(indices, entries);
   VertexStreamStats stats;
   std::vector<bool> seen;
   for (const std::uint32_t index : indices) {

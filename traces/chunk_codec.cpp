@@ -26,17 +26,45 @@ std::uint64_t zigzag(std::uint64_t delta) {  // delta is a two's complement diff
 }
 std::uint64_t unzigzag(std::uint64_t z) { return (z >> 1) ^ (~(z & 1) + 1); }
 
-// Encodes one field of every record: get(i) is the field's value in record i.
+constexpr std::uint8_t kEscapedBytes = 0x81;  // column mode: 1-byte deltas, 0xFF escapes to 8 bytes
+
+// Encodes one field of every record: get(i) is the field's value in record i. The column uses the
+// cheapest of: fixed-width deltas (0, 1, 2, 4 or 8 bytes), or 1-byte deltas where the rare large
+// jump (a new texture row, a far vertex) escapes to an 8-byte delta stored after the bytes.
 template <typename Get>
 void put_column(std::string& out, std::size_t n, Get get) {
-  std::uint64_t widest = 0;
-  for (std::size_t i = 1; i < n; ++i) widest |= zigzag(get(i) - get(i - 1));
+  std::uint64_t widest = 0, large = 0;
+  for (std::size_t i = 1; i < n; ++i) {
+    const std::uint64_t z = zigzag(get(i) - get(i - 1));
+    widest |= z;
+    large += z >= 0xFF;
+  }
   const std::uint8_t width = widest == 0 ? 0 : widest < 0x100 ? 1 : widest < 0x10000 ? 2 : widest < 0x100000000ull ? 4 : 8;
-  out.push_back(static_cast<char>(width));
+  const std::uint64_t deltas = n ? n - 1 : 0;
+  const bool escaped = width > 1 && deltas + 4 + 8 * large < deltas * width;
+  out.push_back(static_cast<char>(escaped ? kEscapedBytes : width));
   put<std::uint64_t>(out, n ? get(0) : 0);
   if (width == 0) return;
+  if (escaped) {
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(large));
+    const std::size_t start = out.size();
+    out.resize(start + deltas + 8 * large);
+    char* bytes = out.data() + start;
+    char* exceptions = bytes + deltas;
+    for (std::size_t i = 1; i < n; ++i) {
+      const std::uint64_t z = zigzag(get(i) - get(i - 1));
+      if (z < 0xFF) {
+        bytes[i - 1] = static_cast<char>(z);
+      } else {
+        bytes[i - 1] = static_cast<char>(0xFF);
+        std::memcpy(exceptions, &z, 8);
+        exceptions += 8;
+      }
+    }
+    return;
+  }
   const std::size_t start = out.size();
-  out.resize(start + (n - 1) * width);
+  out.resize(start + deltas * width);
   char* p = out.data() + start;
   for (std::size_t i = 1; i < n; ++i, p += width) {
     const std::uint64_t z = zigzag(get(i) - get(i - 1));
@@ -82,8 +110,40 @@ void get_column(Cursor& c, std::size_t n, std::uint64_t limit, const char* what,
   const std::uint8_t width = c.get<std::uint8_t>(what);
   const std::uint64_t first = c.get<std::uint64_t>(what);
   if (!c.error.empty()) return;
-  if (width != 0 && width != 1 && width != 2 && width != 4 && width != 8) {
+  if (width != 0 && width != 1 && width != 2 && width != 4 && width != 8 && width != kEscapedBytes) {
     c.error = std::string("bad column width ") + std::to_string(width) + " in the " + what + " column";
+    return;
+  }
+  if (width == kEscapedBytes) {
+    const std::uint32_t large = c.get<std::uint32_t>(what);
+    if (!c.error.empty() || n == 0) return;
+    if (!c.take((n - 1) + std::size_t{large} * 8, what)) return;
+    const std::uint8_t* bytes = c.p;
+    const std::uint8_t* exceptions = c.p + (n - 1);
+    const std::uint8_t* const exceptions_end = exceptions + std::size_t{large} * 8;
+    std::uint64_t value = first, all = first;
+    bool overrun = false;
+    set(0, value);
+    for (std::size_t i = 1; i < n; ++i) {
+      std::uint64_t z = bytes[i - 1];
+      if (z == 0xFF) [[unlikely]] {
+        if (exceptions == exceptions_end) {
+          overrun = true;
+          z = 0;
+        } else {
+          std::memcpy(&z, exceptions, 8);
+          exceptions += 8;
+        }
+      }
+      value += unzigzag(z);
+      all |= value;
+      set(i, value);
+    }
+    c.p = exceptions_end;
+    if (overrun || exceptions != exceptions_end)
+      c.error = std::string("escaped deltas do not match their escapes in the ") + what + " column";
+    else if (all > limit)
+      c.error = std::string("a value in the ") + what + " column is out of range";
     return;
   }
   if (n == 0) return;

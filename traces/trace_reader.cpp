@@ -179,9 +179,7 @@ const DecodedChunk& TraceReader::read_chunk(std::size_t i) {
   chunk_.flags = flags;
   chunk_.first_record = first;
   std::string error;
-  chunk_.vertices.clear();
-  chunk_.texels.clear();
-  chunk_.addresses.clear();
+  // Only the decoded kind's vector is resized (no clearing: that would zero-fill it again).
   switch (info.kind) {
     case RecordKind::Vertex: error = decode_vertex_records(raw_, records, chunk_.draw, chunk_.vertices); break;
     case RecordKind::Texel: error = decode_texel_records(raw_, records, chunk_.texels); break;

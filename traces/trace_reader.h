@@ -25,6 +25,7 @@ namespace rastrace {
 
 class Progress;
 
+// Only the vector of the chunk's kind holds this chunk's records; the others are stale.
 struct DecodedChunk {
   RecordKind kind = RecordKind::Vertex;
   std::uint8_t flags = 0;  // kChunkStartsDraw, kChunkEndsDraw (vertex chunks)

@@ -121,6 +121,51 @@ TEST(Crc32c, MatchesTheCastagnoliCheckValue) {
   EXPECT_EQ(crc32c("6789", 4, crc32c("12345", 5)), 0xE3069283u);
 }
 
+TEST(ChunkCodec, ColumnsRoundTripSmallStepsLargeJumpsAndExtremes) {
+  // Mostly small steps with rare huge jumps: the escaped 1-byte column mode.
+  std::vector<VertexFetch> fetches;
+  for (std::uint32_t i = 0; i < 5000; ++i)
+    fetches.push_back({i % 997 == 0 ? 0xFFFFFFFFu - i : (i % 13 == 0 ? 0u : i * 3), i % 3 == 0});
+  std::string raw;
+  encode_vertex_records({7, PrimitiveType::TriangleStrip, 0xFFFF}, fetches, raw);
+  EXPECT_LT(raw.size(), 5000u * 3);  // 1 byte per delta + 8 per escape, not the 4 of fixed width
+  DrawInfo draw;
+  std::vector<VertexFetch> back;
+  ASSERT_EQ(decode_vertex_records({reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size()}, 5000, draw, back), "");
+  EXPECT_EQ(draw.draw, 7u);
+  EXPECT_EQ(draw.type, PrimitiveType::TriangleStrip);
+  ASSERT_EQ(back.size(), fetches.size());
+  for (std::size_t i = 0; i < fetches.size(); ++i) {
+    ASSERT_EQ(back[i].vertex, fetches[i].vertex) << i;
+    ASSERT_EQ(back[i].primitive_start, fetches[i].primitive_start) << i;
+  }
+  std::vector<AddressAccess> addresses = {{~std::uint64_t{0}, 2}, {0, 0}, {1ull << 63, 1}};
+  encode_address_records(addresses, raw);
+  std::vector<AddressAccess> addresses_back;
+  ASSERT_EQ(decode_address_records({reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size()}, 3, addresses_back), "");
+  EXPECT_EQ(addresses_back[0].address, ~std::uint64_t{0});
+  EXPECT_EQ(addresses_back[2].address, 1ull << 63);
+  EXPECT_EQ(addresses_back[0].label, 2);
+}
+
+TEST(ChunkCodec, DecodersReportGarbageAsErrorsWithoutReadingPastTheEnd) {
+  const MemorySink events = sample_events();
+  std::string raw;
+  encode_texel_records(events.texels, raw);
+  std::uint64_t state = 42;
+  int errors = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    std::string bad = raw;
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    if (trial % 3 == 0) bad.resize(static_cast<std::size_t>(state >> 33) % raw.size());
+    else bad[static_cast<std::size_t>(state >> 33) % bad.size()] ^= static_cast<char>(1 + (state >> 20) % 255);
+    std::vector<TexelAccess> out;
+    errors += !decode_texel_records({reinterpret_cast<const std::uint8_t*>(bad.data()), bad.size()},
+                                    static_cast<std::uint32_t>(events.texels.size()), out).empty();
+  }
+  EXPECT_GE(errors, 100);  // every truncation at least; flipped delta bytes may decode to other values
+}
+
 TEST(TraceFile, RoundTripKeepsEveryRecordAndTheMetadata) {
   const std::string path = temp_path("roundtrip.rtrace");
   write_sample(path);

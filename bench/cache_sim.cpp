@@ -1,0 +1,138 @@
+// Cache simulator throughput (docs/PERFORMANCE.md, cache simulator section):
+//   - FIFO vertex-cache replay: rastrace's simulate_vertex_stream against meshoptimizer's
+//     meshopt_analyzeVertexCache on the same index buffer in the same binary (goal: ratio >= 1)
+//   - set-associative LRU byte cache, 16 KiB / 64 B / 4-way (goal: 150 M accesses/s)
+//   - one-pass fully associative LRU stack profile, every size at once (goal: 30 M accesses/s)
+// Byte-cache inputs are the line numbers of a synthetic frame-like texel trace (512x512 pixels,
+// bilinear, a 1024^2 texture in block4 layout; tests/support/synthetic_frame.h).
+#include <meshoptimizer.h>
+
+#include <benchmark/benchmark.h>
+
+#include "cache_sim/byte_cache.h"
+#include "cache_sim/lru_profile.h"
+#include "cache_sim/opt_cache.h"
+#include "cache_sim/texture_layout.h"
+#include "cache_sim/vertex_cache.h"
+#include "scenes/mesh_io.h"
+#include "tests/support/synthetic_frame.h"
+
+namespace rastrace {
+namespace {
+
+const std::vector<std::uint32_t>& bunny_indices() {
+  // bunny00.off (CGAL), reordered by meshoptimizer for a realistic, cache-friendly stream.
+  static const std::vector<std::uint32_t> indices = [] {
+    const Mesh mesh = load_mesh(RASTRACE_DATA_DIR "/meshes/bunny00.off");
+    std::vector<std::uint32_t> out(mesh.indices.size());
+    meshopt_optimizeVertexCache(out.data(), mesh.indices.data(), out.size(), mesh.positions.size());
+    return out;
+  }();
+  return indices;
+}
+
+std::size_t vertex_count(const std::vector<std::uint32_t>& indices) {
+  std::uint32_t max = 0;
+  for (const std::uint32_t i : indices) max = std::max(max, i);
+  return std::size_t{max} + 1;
+}
+
+void BM_FifoVertexReplay_Rastrace(benchmark::State& state) {
+  const auto& indices = bunny_indices();
+  const unsigned k = static_cast<unsigned>(state.range(0));
+  for (auto _ : state) {
+    const VertexStreamStats s = simulate_vertex_stream(indices, PrimitiveType::TriangleList, VertexCachePolicy::Fifo, k);
+    benchmark::DoNotOptimize(s.misses);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * indices.size()));
+}
+BENCHMARK(BM_FifoVertexReplay_Rastrace)->Arg(16)->Arg(32);
+
+void BM_FifoVertexReplay_Meshopt(benchmark::State& state) {
+  const auto& indices = bunny_indices();
+  const std::size_t vertices = vertex_count(indices);
+  const unsigned k = static_cast<unsigned>(state.range(0));
+  for (auto _ : state) {
+    const meshopt_VertexCacheStatistics s = meshopt_analyzeVertexCache(indices.data(), indices.size(), vertices, k, 0, 0);
+    benchmark::DoNotOptimize(s.vertices_transformed);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * indices.size()));
+}
+BENCHMARK(BM_FifoVertexReplay_Meshopt)->Arg(16)->Arg(32);
+
+const std::vector<std::uint64_t>& frame_lines(std::uint32_t line_bytes) {
+  static std::vector<std::uint64_t> lines;
+  static std::uint32_t cached = 0;
+  if (cached != line_bytes) {
+    const testing::SyntheticFrame frame = testing::make_synthetic_frame(512, 512, 1024);
+    const TextureLayout layout(parse_layout("block4"), frame.textures);
+    lines.clear();
+    for (const TexelAccess& t : frame.texels) lines.push_back(layout.address(t.texture, t.level, t.x, t.y) / line_bytes);
+    cached = line_bytes;
+  }
+  return lines;
+}
+
+void BM_SetAssocLru_16KiB_64B_4way(benchmark::State& state) {
+  const auto& lines = frame_lines(64);
+  ByteCache cache({16 * 1024, 64, 4, ReplacementPolicy::Lru, 1});
+  for (auto _ : state) {
+    cache.clear();
+    benchmark::DoNotOptimize(cache.access_lines(lines));
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * lines.size()));
+  state.counters["miss_rate"] = cache.stats().miss_rate();
+}
+BENCHMARK(BM_SetAssocLru_16KiB_64B_4way);
+
+void BM_ByteCachePolicies(benchmark::State& state) {
+  const auto& lines = frame_lines(64);
+  const auto policy = static_cast<ReplacementPolicy>(state.range(0));
+  const std::uint32_t assoc = static_cast<std::uint32_t>(state.range(1));
+  ByteCache cache({16 * 1024, 64, assoc, policy, 1});
+  for (auto _ : state) {
+    cache.clear();
+    benchmark::DoNotOptimize(cache.access_lines(lines));
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * lines.size()));
+  state.SetLabel(describe(cache.config()));
+}
+BENCHMARK(BM_ByteCachePolicies)
+    ->Args({static_cast<int>(ReplacementPolicy::Fifo), 4})
+    ->Args({static_cast<int>(ReplacementPolicy::Random), 4})
+    ->Args({static_cast<int>(ReplacementPolicy::Lru), 1})
+    ->Args({static_cast<int>(ReplacementPolicy::Lru), 16})
+    ->Args({static_cast<int>(ReplacementPolicy::Lru), 0})
+    ->Args({static_cast<int>(ReplacementPolicy::Fifo), 0});
+
+void BM_OptFullyAssociative_16KiB(benchmark::State& state) {
+  const auto& lines = frame_lines(64);
+  for (auto _ : state) benchmark::DoNotOptimize(simulate_opt({16 * 1024, 64, 0, ReplacementPolicy::Opt, 1}, lines).misses);
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * lines.size()));
+}
+BENCHMARK(BM_OptFullyAssociative_16KiB)->Unit(benchmark::kMillisecond);
+
+void BM_LruStackProfile_AllSizes(benchmark::State& state) {
+  const auto& lines = frame_lines(64);
+  for (auto _ : state) {
+    LruStackProfile profile;
+    profile.access_lines(lines);
+    benchmark::DoNotOptimize(profile.misses(256));
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * lines.size()));
+}
+BENCHMARK(BM_LruStackProfile_AllSizes);
+
+void BM_SetAssocLruProfile_64Sets_Ways1to16(benchmark::State& state) {
+  const auto& lines = frame_lines(64);
+  for (auto _ : state) {
+    SetAssocLruProfile profile(64, 16);
+    profile.access_lines(lines);
+    benchmark::DoNotOptimize(profile.misses(4));
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * lines.size()));
+}
+BENCHMARK(BM_SetAssocLruProfile_64Sets_Ways1to16);
+
+}  // namespace
+}  // namespace rastrace

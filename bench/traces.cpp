@@ -1,0 +1,127 @@
+// Trace file throughput and size (docs/PERFORMANCE.md, cache simulator section):
+//   - read + decode (CRC check, zstd, column decoding) of vertex and texel chunks (goal: 200 M
+//     records/s)
+//   - texel trace size on disk in bytes per access (goal: at most 2 on a rendered frame); here on
+//     the synthetic frame-like trace of tests/support/synthetic_frame.h, labelled as such
+//   - writer throughput
+#include <unistd.h>
+
+#include <filesystem>
+
+#include <meshoptimizer.h>
+
+#include <benchmark/benchmark.h>
+
+#include "scenes/mesh_io.h"
+#include "tests/support/synthetic_frame.h"
+#include "traces/trace_reader.h"
+#include "traces/trace_writer.h"
+
+namespace rastrace {
+namespace {
+
+std::string temp(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("rastrace_bench_" + std::to_string(::getpid()) + "_" + name)).string();
+}
+
+const testing::SyntheticFrame& frame() {
+  static const testing::SyntheticFrame f = testing::make_synthetic_frame(1024, 1024, 1024);
+  return f;
+}
+
+// The texel trace of the synthetic frame, written once.
+const std::string& texel_trace() {
+  static const std::string path = [] {
+    const std::string p = temp("texels.rtrace");
+    TraceMetadata m;
+    m.scene = "synthetic frame-like quad 1024x1024";
+    m.textures = frame().textures;
+    TraceWriter writer(p, m);
+    writer.texel_accesses(frame().texels);
+    writer.finish();
+    return p;
+  }();
+  return path;
+}
+
+// The vertex trace of bunny00.off in meshoptimizer's order, repeated 20 times (20 draws).
+const std::string& vertex_trace() {
+  static const std::string path = [] {
+    const Mesh mesh = load_mesh(RASTRACE_DATA_DIR "/meshes/bunny00.off");
+    std::vector<std::uint32_t> order(mesh.indices.size());
+    meshopt_optimizeVertexCache(order.data(), mesh.indices.data(), order.size(), mesh.positions.size());
+    std::vector<VertexFetch> fetches;
+    for (std::size_t i = 0; i < order.size(); ++i) fetches.push_back({order[i], i % 3 == 0});
+    const std::string p = temp("vertices.rtrace");
+    TraceWriter writer(p, {});
+    for (std::uint32_t d = 0; d < 20; ++d) {
+      writer.begin_draw({d, PrimitiveType::TriangleList, kNoRestart});
+      writer.vertex_fetches(fetches);
+      writer.end_draw();
+    }
+    writer.finish();
+    return p;
+  }();
+  return path;
+}
+
+void BM_TraceReadDecode_Texels(benchmark::State& state) {
+  const std::string& path = texel_trace();
+  std::uint64_t records = 0;
+  for (auto _ : state) {
+    TexelTraceReader reader(path);
+    std::span<const TexelAccess> batch;
+    while (reader.next(batch)) {
+      records += batch.size();
+      benchmark::DoNotOptimize(batch.data());
+    }
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(records));
+  const TraceReader reader(path);
+  state.counters["bytes_per_access"] = double(reader.file_bytes()) / double(reader.records(RecordKind::Texel));
+  state.counters["accesses"] = double(reader.records(RecordKind::Texel));
+}
+BENCHMARK(BM_TraceReadDecode_Texels)->Unit(benchmark::kMillisecond);
+
+void BM_TraceReadDecode_Vertices(benchmark::State& state) {
+  const std::string& path = vertex_trace();
+  std::uint64_t records = 0;
+  for (auto _ : state) {
+    VertexTraceReader reader(path);
+    VertexBatch batch;
+    while (reader.next(batch)) {
+      records += batch.fetches.size();
+      benchmark::DoNotOptimize(batch.fetches.data());
+    }
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(records));
+  const TraceReader reader(path);
+  state.counters["bytes_per_fetch"] = double(reader.file_bytes()) / double(reader.records(RecordKind::Vertex));
+}
+BENCHMARK(BM_TraceReadDecode_Vertices)->Unit(benchmark::kMillisecond);
+
+void BM_TraceWrite_Texels(benchmark::State& state) {
+  const std::string path = temp("write.rtrace");
+  TraceMetadata m;
+  m.textures = frame().textures;
+  for (auto _ : state) {
+    TraceWriter writer(path, m);
+    writer.texel_accesses(frame().texels);
+    writer.finish();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * frame().texels.size()));
+  std::filesystem::remove(path);
+}
+BENCHMARK(BM_TraceWrite_Texels)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace rastrace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  std::filesystem::remove(rastrace::texel_trace());
+  std::filesystem::remove(rastrace::vertex_trace());
+  return 0;
+}
