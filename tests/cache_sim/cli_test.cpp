@@ -1,0 +1,150 @@
+// `rastrace replay` and `rastrace sweep` end to end, through the built tool.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cache_sim/live_bank_sink.h"
+#include "naive_cache.h"
+#include "tests/support/synthetic_frame.h"
+#include "tests/support/test_data.h"
+#include "traces/trace_reader.h"
+#include "traces/trace_writer.h"
+
+namespace rastrace {
+namespace {
+
+using ::testing::HasSubstr;
+
+struct ToolRun {
+  int status = -1;
+  std::string out;  // stdout and stderr
+};
+
+ToolRun run(const std::string& arguments) {
+  ToolRun r;
+  const std::string command = testing::rastrace_binary() + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  char buffer[4096];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof(buffer), pipe)) > 0) r.out.append(buffer, n);
+  const int status = pclose(pipe);
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string temp(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("rastrace_cli_" + std::to_string(::getpid()) + "_" + name)).string();
+}
+
+TEST(SweepCommand, DinSweepGivesTheNaiveReferenceMissesForEveryConfiguration) {
+  std::mt19937_64 rng(2024);
+  std::vector<std::uint64_t> addresses;
+  for (int i = 0; i < 1200; ++i) addresses.push_back(rng() % 3 ? 0x10000 + rng() % 3000 : rng() % 0x40000);
+  const std::string din = temp("trace.din");
+  {
+    std::ofstream out(din);
+    for (const std::uint64_t a : addresses) out << (a % 3) << ' ' << std::hex << a << std::dec << '\n';
+  }
+  const ToolRun r = run("sweep " + din + " --size 256B..2KiB --line 16B,64B --assoc 1,2,full --policy fifo,lru,random,opt --format json");
+  std::filesystem::remove(din);
+  ASSERT_EQ(r.status, 0) << r.out;
+  const nlohmann::json rows = nlohmann::json::parse(r.out);
+  ASSERT_EQ(rows.size(), 4u * 2 * 3 * 4);
+  for (const auto& row : rows) {
+    const std::uint64_t size = row.at("size_bytes"), line = row.at("line_bytes"), assoc = row.at("assoc");
+    const std::string policy = row.at("policy");
+    EXPECT_EQ(row.at("accesses").get<std::uint64_t>(), addresses.size());
+    EXPECT_EQ(row.at("misses").get<std::uint64_t>(), testing::naive_misses(addresses, size, line, assoc, policy, 1))
+        << size << "/" << line << "/" << assoc << "/" << policy;
+    EXPECT_EQ(row.at("source"), "address");
+    EXPECT_EQ(row.at("trace_format"), "din");
+  }
+}
+
+TEST(ReplayCommand, ReplayTableStatesItsParametersAndMatchesTheLiveBank) {
+  const testing::SyntheticFrame frame = testing::make_synthetic_frame(64, 64, 256);
+  TraceMetadata meta;
+  meta.scene = "synthetic";
+  meta.ordering = "scanline";
+  meta.width = meta.height = 64;
+  meta.filter = "bilinear";
+  meta.textures = frame.textures;
+  const std::string path = temp("frame.rtrace");
+  {
+    TraceWriter writer(path, meta);
+    writer.texel_accesses(frame.texels);
+    writer.finish();
+  }
+  CacheBankConfig bank;
+  bank.texture.push_back({CacheConfig{4096, 64, 2, ReplacementPolicy::Lru, 1}, parse_layout("block4")});
+  bank.texture.push_back({CacheConfig{4096, 64, 0, ReplacementPolicy::Opt, 1}, parse_layout("morton")});
+  LiveBankSink live(bank, frame.textures);
+  live.texel_accesses(frame.texels);
+  live.finish();
+
+  const ToolRun r = run("replay " + path + " --cache size=4KiB,line=64B,assoc=2,policy=lru,layout=block4 "
+                    "--cache size=4KiB,assoc=full,policy=opt,layout=morton --format csv");
+  ASSERT_EQ(r.status, 0) << r.out;
+  for (const char* parameter : {"# scene: synthetic", "# ordering: scanline", "# resolution: 64x64", "# filter: bilinear",
+                                "# texel_bytes: 4", "# level_alignment_bytes: 4096", "# source: texel"})
+    EXPECT_THAT(r.out, HasSubstr(parameter));
+  EXPECT_THAT(r.out, HasSubstr("4096,64,2,lru,block4,16384," + std::to_string(live.texture_stats()[0].hits) + "," +
+                                   std::to_string(live.texture_stats()[0].misses) + ","));
+  EXPECT_THAT(r.out, HasSubstr("4096,64,0,opt,morton,16384," + std::to_string(live.texture_stats()[1].hits) + "," +
+                                   std::to_string(live.texture_stats()[1].misses) + ","));
+
+  const std::string plot = temp("plot.svg");
+  const ToolRun s = run("sweep " + path + " --size 1KiB..8KiB --policy lru,fifo --layout linear,morton --plot " + plot +
+                    " --format latex");
+  EXPECT_EQ(s.status, 0) << s.out;
+  EXPECT_THAT(s.out, HasSubstr("\\toprule"));
+  EXPECT_TRUE(std::filesystem::exists(plot));
+  std::ifstream svg(plot);
+  const std::string text((std::istreambuf_iterator<char>(svg)), {});
+  EXPECT_THAT(text, HasSubstr("lru morton"));
+  EXPECT_THAT(text, HasSubstr("fifo linear"));
+  std::filesystem::remove(plot);
+  std::filesystem::remove(path);
+}
+
+TEST(ReplayCommand, BadInputsAreReportedWithExitCodeOne) {
+  const std::string path = temp("bad.rtrace");
+  {
+    TraceWriter writer(path, {});
+    writer.address_accesses({{{1, 0}, {2, 0}}});
+    writer.finish();
+  }
+  ToolRun r = run("replay " + path + " --cache size=3KiB,line=64B,assoc=32");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_THAT(r.out, HasSubstr("48 lines do not divide into 32-way sets"));
+  r = run("replay " + path + " --cache size=4KiB,colour=red");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_THAT(r.out, HasSubstr("unknown key 'colour'"));
+  r = run("sweep " + path + " --size 1KiB..3KiB");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_THAT(r.out, HasSubstr("--size: '1KiB..3KiB': expected a range between two powers of two"));
+  // Flip a payload byte: the replay names the chunk.
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::uint64_t offset = TraceReader(path).chunks()[0].offset;
+  bytes[offset + kChunkHeaderBytes + 2] ^= 1;
+  std::ofstream(path, std::ios::binary) << bytes;
+  r = run("replay " + path + " --cache size=4KiB");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_THAT(r.out, HasSubstr("byte " + std::to_string(offset) + ": chunk 0: checksum mismatch"));
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace rastrace
