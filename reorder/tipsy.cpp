@@ -14,6 +14,7 @@
 // ignored: the rule is defined for FIFO. Linear time. ACMR on real meshes about 0.65-0.75 at
 // k = 16; the paper's steady state on a regular mesh is (n+2)/(2n+2). Deterministic.
 #include <algorithm>
+#include <memory>
 
 #include "reorder/vertex_faces.h"
 #include "reorder/ordering.h"
@@ -31,7 +32,8 @@ Ordering reorder_tipsy(const Mesh& mesh, const ReorderParams& params) {
   std::vector<std::uint32_t> stamp(vertex_count, 0);
   std::vector<std::uint8_t> emitted(face_count, 0);
   // The dead-end stack; the entries a fan pushes are also that fan's candidate list.
-  std::vector<std::uint32_t> dead_end(3 * std::size_t(face_count));
+  // Never read above its top, so left uninitialised (it is the largest array here).
+  const std::unique_ptr<std::uint32_t[]> dead_end = std::make_unique_for_overwrite<std::uint32_t[]>(3 * std::size_t(face_count) + 1);
   std::size_t dead_end_size = 0;
 
   Ordering ordering;

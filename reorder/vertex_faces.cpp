@@ -31,12 +31,16 @@ MeshTopology build_vertex_faces(const Mesh& mesh) {
   }
   for (std::uint32_t v = 0; v < V; ++v) t.vertex_face_offsets[v + 1] += t.vertex_face_offsets[v];
   t.vertex_faces.resize(t.vertex_face_offsets[V]);
-  std::vector<std::uint32_t> fill(t.vertex_face_offsets.begin(), t.vertex_face_offsets.end() - 1);
+  // Fill through offsets[v + 1] used as vertex v's cursor (it starts at v's first slot, i.e.
+  // offsets[v] before the shift), so no cursor array is needed; afterwards offsets[v + 1] is v's
+  // end, which is what it must be.
+  std::uint32_t* cursor = t.vertex_face_offsets.data();
+  for (std::uint32_t v = V; v > 0; --v) cursor[v] = cursor[v - 1];
   for (std::uint32_t f = 0; f < F; ++f) {
     const std::uint32_t a = idx[3 * f], b = idx[3 * f + 1], c = idx[3 * f + 2];
-    t.vertex_faces[fill[a]++] = f;
-    if (b != a) t.vertex_faces[fill[b]++] = f;
-    if (c != a && c != b) t.vertex_faces[fill[c]++] = f;
+    t.vertex_faces[cursor[a + 1]++] = f;
+    if (b != a) t.vertex_faces[cursor[b + 1]++] = f;
+    if (c != a && c != b) t.vertex_faces[cursor[c + 1]++] = f;
   }
   return t;
 }
