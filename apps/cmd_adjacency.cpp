@@ -68,7 +68,10 @@ void run_adjacency(const AdjacencyOptions& options) {
   if (options.cache == 0) throw InputError("--cache 0: a vertex cache needs at least 1 entry");
   std::vector<AdjacencyOrder> orders;
   if (options.order == "all") orders = {AdjacencyOrder::Careful, AdjacencyOrder::Fast, AdjacencyOrder::Baseline};
-  else orders = {parse_adjacency_order(options.order)};
+  else if (options.order == "careful" || options.order == "fast" || options.order == "baseline")
+    orders = {parse_adjacency_order(options.order)};
+  else
+    throw InputError("--order '" + options.order + "': expected careful, fast, baseline or all");
   const Mesh mesh = load_mesh_spec(options.mesh);
   if (mesh.face_count() == 0) throw InputError(options.mesh + ": the mesh has no faces");
 

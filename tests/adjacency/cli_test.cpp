@@ -1,0 +1,92 @@
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/support/test_data.h"
+
+namespace rastrace {
+namespace {
+
+struct CommandRun {
+  int status = -1;
+  std::string out;
+};
+
+CommandRun run(const std::string& arguments) {
+  CommandRun result;
+  const std::string command = testing::rastrace_binary() + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  char buffer[4096];
+  std::size_t n;
+  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, n);
+  const int status = pclose(pipe);
+  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+TEST(AdjacencyCommand, JsonRowsCarryCoverBoundCacheMissesAndGain) {
+  const std::string mesh = testing::data_file("meshes/triceratops.off");
+  const std::filesystem::path output = std::filesystem::temp_directory_path() / "rastrace_adjacency_test.txt";
+  std::filesystem::remove(output);
+  const CommandRun r = run("adjacency " + mesh + " --format json --no-time -o " + output.string());
+  ASSERT_EQ(r.status, 0) << r.out;
+  const nlohmann::json rows = nlohmann::json::parse(r.out);
+  ASSERT_EQ(rows.size(), 4u);  // careful, fast, baseline, naive
+  const char* orders[] = {"careful", "fast", "baseline", "naive"};
+  for (std::size_t i = 0; i < 4; ++i) {
+    const auto& row = rows[i];
+    EXPECT_EQ(row.at("order"), orders[i]);
+    EXPECT_EQ(row.at("faces"), 5660);
+    EXPECT_EQ(row.at("cover"), 3125);
+    EXPECT_NEAR(row.at("lower_bound").get<double>(), (8490.0 + 637.0) / 3.0, 1e-9);
+    EXPECT_NEAR(row.at("c_over_b").get<double>(), 3125.0 / ((8490.0 + 637.0) / 3.0), 1e-9);
+    EXPECT_EQ(row.at("cache"), 24);
+  }
+  EXPECT_EQ(rows[0].at("primitives"), 3125);
+  EXPECT_EQ(rows[3].at("primitives"), 5660);
+  EXPECT_NEAR(rows[0].at("cm_per_v").get<double>(), 1.501, 0.0005);
+  EXPECT_NEAR(rows[1].at("cm_per_v").get<double>(), 1.680, 0.0005);
+  EXPECT_DOUBLE_EQ(rows[2].at("gain").get<double>(), 1.0);
+  EXPECT_GT(rows[0].at("gain").get<double>(), 1.3);
+  EXPECT_LT(rows[3].at("gain").get<double>(), 1.0);  // one primitive per face is worse than the baseline
+
+  // -o: the careful index buffer, one primitive per line after the header.
+  std::ifstream in(output);
+  std::string line;
+  std::size_t lines = 0;
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("# GL_TRIANGLES_ADJACENCY", 0), 0u) << line;
+  while (std::getline(in, line)) ++lines;
+  EXPECT_EQ(lines, 3125u);
+  std::filesystem::remove(output);
+}
+
+TEST(AdjacencyCommand, BadInputIsAnErrorWithExitCodeOne) {
+  const std::string mesh = testing::data_file("meshes/triceratops.off");
+  CommandRun r = run("adjacency " + mesh + " --order bogus");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.out.find("expected careful, fast, baseline or all"), std::string::npos) << r.out;
+  r = run("adjacency " + mesh + " --cache 0");
+  EXPECT_EQ(r.status, 1);
+  r = run("adjacency /nonexistent/mesh.off");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.out.find("/nonexistent/mesh.off"), std::string::npos) << r.out;
+  r = run("adjacency " + mesh + " --format xml");
+  EXPECT_EQ(r.status, 1);
+}
+
+TEST(AdjacencyCommand, MarkdownTableShowsEveryOrderingOnAGrid) {
+  const CommandRun r = run("adjacency grid:8x8 --order fast --iterations 100 --no-time");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("| fast |"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("| careful |"), std::string::npos);
+  EXPECT_NE(r.out.find("- cache: 24"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace rastrace
