@@ -19,17 +19,29 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The diffuse (or glTF base colour) texture of a material, resolved beside the model file.
-void read_texture(const std::string& path, const aiMaterial& source, Material& material) {
+// The diffuse (or glTF base colour) texture of a material: a file resolved beside the model, or
+// an image embedded in the model ("*0", or a name the scene's embedded textures carry).
+void read_texture(const std::string& path, const aiScene& scene, const aiMaterial& source, Material& material) {
   aiString texture;
   if (source.GetTexture(aiTextureType_DIFFUSE, 0, &texture) != AI_SUCCESS &&
       source.GetTexture(aiTextureType_BASE_COLOR, 0, &texture) != AI_SUCCESS)
     return;
   std::string name = texture.C_Str();
   if (name.empty()) return;
-  if (name[0] == '*')  // embedded in the model file: no file to hand to the renderer
-    throw_in_file(path, "material '" + material.name + "': embedded texture " + name +
-                            " is not supported; expected a texture file beside the model");
+  if (const aiTexture* embedded = scene.GetEmbeddedTexture(name.c_str())) {
+    if (embedded->mHeight != 0 || embedded->mWidth == 0)
+      throw_in_file(path, "material '" + material.name + "': embedded texture " + name +
+                              " holds raw texels; expected an encoded image (PNG, JPEG...)");
+    const auto* bytes = reinterpret_cast<const std::uint8_t*>(embedded->pcData);
+    material.texture_source.kind = TextureSource::Kind::File;
+    material.texture_source.embedded = std::make_shared<const std::vector<std::uint8_t>>(bytes, bytes + embedded->mWidth);
+    // The format hint ("png", "jpg") gives the decoder; the name says where the image came from.
+    std::string hint = embedded->achFormatHint;
+    if (hint.empty() || hint.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789") != std::string::npos) hint = "png";
+    material.texture_source.path = path + "#" + name + "." + hint;
+    return;
+  }
+  if (name[0] == '*') throw_in_file(path, "material '" + material.name + "': embedded texture " + name + " not found in the file");
   for (char& c : name)
     if (c == '\\') c = '/';
   if (name.starts_with("file://")) name = name.substr(7);
@@ -67,7 +79,7 @@ Mesh load_with_assimp(const std::string& path) {
       material.diffuse = glm::vec4(colour.r, colour.g, colour.b, colour.a);
     float opacity = 1.0f;
     if (source.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) material.diffuse.a = opacity;
-    read_texture(path, source, material);
+    read_texture(path, *scene, source, material);
     mesh.materials.push_back(std::move(material));
   }
 

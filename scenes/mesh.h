@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +20,9 @@ struct TextureSource {
   std::string path;   // Kind::File: resolved path of the image
   int size = 256;     // procedural: width and height in texels
   int checks = 8;     // Kind::Checker: squares per side
+  // Kind::File with the image inside the model (glTF/GLB, FBX...): the encoded image file (PNG,
+  // JPEG...) as bytes; `path` then names it "model.glb#*0" (no such file on disk).
+  std::shared_ptr<const std::vector<std::uint8_t>> embedded;
 };
 
 struct Material {

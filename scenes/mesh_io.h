@@ -10,7 +10,8 @@
 //                        of first appearance; negative indices; usemtl gives per-face materials;
 //                        map_Kd resolved relative to the MTL file
 //   anything else        through assimp (glTF, COLLADA, 3DS, ...), with
-//                        aiProcess_JoinIdenticalVertices | aiProcess_Triangulate
+//                        aiProcess_JoinIdenticalVertices | aiProcess_Triangulate; the scene
+//                        graph's transforms baked in; embedded images kept in TextureSource::embedded
 // Polygons are fan-triangulated in file order: (v0 v1 v2), (v0 v2 v3), ...
 // Every malformed input throws InputError naming the file, the line (text) or byte offset
 // (binary), and what was expected: "bunny.ply:1234: face index 40012 >= vertex count 34835".

@@ -4,31 +4,30 @@
 #include <filesystem>
 #include <limits>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "core/error.h"
 
 namespace rastrace {
 
-Image load_image(const std::string& path) {
-  std::error_code error;
-  if (!std::filesystem::exists(path, error)) throw_in_file(path, "no such file (expected a texture image)");
-  if (std::filesystem::is_directory(path, error)) throw_in_file(path, "is a directory, expected an image file");
-  auto input = OIIO::ImageInput::open(path);
-  if (!input) throw_in_file(path, "cannot read image (expected PNG, JPEG, TGA...): " + OIIO::geterror());
-  const OIIO::ImageSpec spec = input->spec();
+namespace {
+
+// Reads the first subimage of an opened image as 8-bit RGBA (grey -> g g g 255, RGB -> alpha 255).
+Image decode(OIIO::ImageInput& input, const std::string& name) {
+  const OIIO::ImageSpec spec = input.spec();
   if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1 || spec.depth > 1)
-    throw_in_file(path, "image of " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + "x" +
+    throw_in_file(name, "image of " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + "x" +
                             std::to_string(spec.nchannels) + " channels: expected a 2D image with 1 to 4 channels");
   if (static_cast<std::uint64_t>(spec.width) * static_cast<std::uint64_t>(spec.height) > (std::uint64_t{1} << 28))
-    throw_in_file(path, "image of " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+    throw_in_file(name, "image of " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
                             " texels: expected at most 2^28 texels");
   const int channels = spec.nchannels;
   std::vector<std::uint8_t> pixels(static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) *
                                    static_cast<std::size_t>(channels));
-  if (!input->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels.data()))
-    throw_in_file(path, "cannot decode image (truncated or corrupt?): " + input->geterror());
-  input->close();
+  if (!input.read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels.data()))
+    throw_in_file(name, "cannot decode image (truncated or corrupt?): " + input.geterror());
+  input.close();
 
   Image image;
   image.width = spec.width;
@@ -49,13 +48,31 @@ Image load_image(const std::string& path) {
   return image;
 }
 
+}  // namespace
+
+Image load_image(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) throw_in_file(path, "no such file (expected a texture image)");
+  if (std::filesystem::is_directory(path, error)) throw_in_file(path, "is a directory, expected an image file");
+  auto input = OIIO::ImageInput::open(path);
+  if (!input) throw_in_file(path, "cannot read image (expected PNG, JPEG, TGA...): " + OIIO::geterror());
+  return decode(*input, path);
+}
+
+Image load_image_from_memory(const std::vector<std::uint8_t>& bytes, const std::string& name) {
+  OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
+  auto input = OIIO::ImageInput::open(name, nullptr, &reader);
+  if (!input) throw_in_file(name, "cannot read embedded image (expected PNG, JPEG...): " + OIIO::geterror());
+  return decode(*input, name);
+}
+
 Texture load_texture(const TextureSource& source) {
   Texture texture;
   Image base;
   switch (source.kind) {
     case TextureSource::Kind::None: throw InputError("load_texture: the material has no texture");
     case TextureSource::Kind::File:
-      base = load_image(source.path);
+      base = source.embedded ? load_image_from_memory(*source.embedded, source.path) : load_image(source.path);
       texture.name = source.path;
       break;
     case TextureSource::Kind::Checker:

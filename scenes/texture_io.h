@@ -15,6 +15,9 @@ namespace rastrace {
 // PNG, JPEG, TGA (and anything else OpenImageIO reads), converted to 8-bit RGBA: grey becomes
 // (g, g, g, 255), RGB gets alpha 255. InputError if missing or unreadable.
 Image load_image(const std::string& path);
+// The same from an image file held in memory (textures embedded in glTF/GLB); `name` (with the
+// file's extension, e.g. "truck.glb#*0.png") picks the decoder and names it in errors.
+Image load_image_from_memory(const std::vector<std::uint8_t>& bytes, const std::string& name);
 
 // size x size, checks x checks squares, alternating white (255) and dark grey (64), the top-left
 // square white. size >= 1, 1 <= checks <= size.

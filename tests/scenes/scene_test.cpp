@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "scenes/scene_io.h"
+#include "scenes/texture_io.h"
 #include "tests/scenes/temp_dir.h"
 #include "tests/support/test_data.h"
 
@@ -98,6 +99,17 @@ TEST(MeshFileScene, DefaultCameraSeesTheWholeBoundingBox) {
     EXPECT_LE(std::abs(clip.y), clip.w);
     EXPECT_LE(std::abs(clip.z), clip.w);
   }
+}
+
+TEST(MeshFileScene, GlbEmbeddedTextureDecodesToTheSameTexelsAsTheExternalCopy) {
+  const Scene scene = load_scene(testing::data_file("assimp/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb"));
+  ASSERT_EQ(scene.textures.size(), 1u);
+  EXPECT_THAT(scene.textures[0].name, HasSubstr("BoxTextured.glb#"));
+  const Image external = load_image(testing::data_file("assimp/glTF2/BoxTextured-glTF/CesiumLogoFlat.png"));
+  const Image& embedded = scene.textures[0].levels[0];
+  EXPECT_EQ(embedded.width, external.width);
+  EXPECT_EQ(embedded.height, external.height);
+  EXPECT_EQ(embedded.rgba, external.rgba);
 }
 
 TEST(BuiltinScene, GridIsCheckeredAndSeenFromAboveAtAGrazingAngle) {
