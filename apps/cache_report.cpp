@@ -88,28 +88,33 @@ SweepSource default_source(const TraceSummary& s) {
 }
 
 void write_miss_rate_plot(const std::string& path, const std::string& title, const std::vector<SweepRow>& rows) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension != ".png" && extension != ".svg")
-    throw InputError("--plot " + path + ": expected a .png or .svg file name");
   std::set<std::uint32_t> lines, assocs;
   for (const SweepRow& r : rows) {
     lines.insert(r.cache.line_bytes);
     assocs.insert(r.cache.assoc);
   }
   // Series keyed by everything but the size.
-  std::map<std::string, std::vector<std::pair<std::uint64_t, double>>> series;
+  PlotSeries series;
   for (const SweepRow& r : rows) {
     std::string name = std::string(to_string(r.cache.policy)) + " " + r.layout;
     if (lines.size() > 1) name += " " + format_byte_size(r.cache.line_bytes) + " lines";
     if (assocs.size() > 1) name += r.cache.assoc == 0 ? " full" : " " + std::to_string(r.cache.assoc) + "-way";
     series[name].emplace_back(r.cache.size_bytes, r.stats.miss_rate());
   }
+  write_size_plot(path, title, "miss rate", series);
+}
+
+void write_size_plot(const std::string& path, const std::string& title, const std::string& y_label, PlotSeries series) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension != ".png" && extension != ".svg")
+    throw InputError("--plot " + path + ": expected a .png or .svg file name");
   std::string script;
   script += extension == ".png" ? "set terminal pngcairo size 1000,650 noenhanced\n" : "set terminal svg size 1000,650 noenhanced\n";
-  script += "set logscale x 2\nset xlabel 'cache size'\nset ylabel 'miss rate'\n";
+  script += "set logscale x 2\nset xlabel 'cache size'\nset ylabel '" + y_label + "'\n";
   std::set<std::uint64_t> sizes;
-  for (const SweepRow& r : rows) sizes.insert(r.cache.size_bytes);
+  for (const auto& entry : series)
+    for (const auto& point : entry.second) sizes.insert(point.first);
   std::string tics;
   for (const std::uint64_t size : sizes)
     tics += (tics.empty() ? "" : ", ") + std::string("'") + format_byte_size(size) + "' " + std::to_string(size);
@@ -138,7 +143,8 @@ void write_miss_rate_plot(const std::string& path, const std::string& title, con
       full += "$s" + std::to_string(index++) + " using 1:2 with linespoints title '" + entry.first + "'";
     }
     full = script + full + "\nunset output\n";
-    FILE* gnuplot = popen("gnuplot 2>&1", "w");
+    // gnuplot talks on stderr only, never into a table on stdout.
+    FILE* gnuplot = popen("gnuplot 1>&2", "w");
     if (!gnuplot) throw InputError("--plot: cannot run gnuplot (install gnuplot-nox)");
     std::fwrite(full.data(), 1, full.size(), gnuplot);
     const int status = pclose(gnuplot);

@@ -2,6 +2,7 @@
 // result tables (core/table.h) that state every parameter, gnuplot plots, output files.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,6 +31,10 @@ void write_output(const std::string& path, const std::string& text);
 // Miss rate against cache size (log2 axis), one line per policy and layout (and line size and
 // associativity when those vary). PNG or SVG by extension; written atomically through gnuplot.
 void write_miss_rate_plot(const std::string& path, const std::string& title, const std::vector<SweepRow>& rows);
+
+// Named series of (cache size in bytes, value), drawn against cache size on a log2 axis.
+using PlotSeries = std::map<std::string, std::vector<std::pair<std::uint64_t, double>>>;
+void write_size_plot(const std::string& path, const std::string& title, const std::string& y_label, PlotSeries series);
 
 // The default source for byte caches: texels when the trace has any, then addresses, then vertices.
 SweepSource default_source(const TraceSummary& summary);

@@ -3,18 +3,12 @@
 // One row per algorithm, policy and cache size: ACMR, ATVR, misses, indices per triangle, Hoppe's
 // bandwidth (ACMR * 32 + indices per triangle * 2 bytes per triangle) and the ordering's run time.
 // An algorithm orders for the simulated cache unless --target fixes the size it orders for.
-#include <chrono>
 #include <iostream>
-#include <map>
 #include <memory>
-#include <sstream>
 
 #include "apps/commands.h"
 #include "apps/mesh_spec.h"
-#include "cache_sim/vertex_cache.h"
-#include "core/error.h"
-#include "core/table.h"
-#include "reorder/ordering.h"
+#include "apps/vcache_table.h"
 
 namespace rastrace {
 
@@ -32,81 +26,19 @@ struct VcacheOptions {
   bool no_time = false;
 };
 
-std::vector<const ReorderAlgorithm*> select_algorithms(const std::string& list, const Mesh& mesh) {
-  std::vector<const ReorderAlgorithm*> selected;
-  if (list == "all") {
-    for (const ReorderAlgorithm& algorithm : reorder_algorithms())
-      if (reorder_algorithm_applies(algorithm, mesh)) selected.push_back(&algorithm);
-    return selected;
-  }
-  std::stringstream names(list);
-  std::string name;
-  while (std::getline(names, name, ',')) {
-    if (name.empty()) throw InputError("--algo '" + list + "': empty algorithm name");
-    selected.push_back(&find_reorder_algorithm(name));
-  }
-  return selected;
-}
-
 void run_vcache(const VcacheOptions& options) {
   const TableFormat format = parse_table_format(options.format);
-  std::vector<VertexCachePolicy> policies;
-  for (const std::string& text : options.policies) policies.push_back(parse_vertex_cache_policy(text));
-  for (const unsigned cache : options.caches)
-    if (cache == 0) throw InputError("--cache 0: a vertex cache needs at least 1 entry");
+  VcacheTableSpec spec;
+  spec.algorithms = options.algorithms;
+  spec.caches = options.caches;
+  spec.policies.clear();
+  for (const std::string& text : options.policies) spec.policies.push_back(parse_vertex_cache_policy(text));
+  spec.target = options.target;
+  spec.seed = options.seed;
+  spec.time_budget = options.time_budget;
+  spec.with_time = !options.no_time;
   const Mesh mesh = load_mesh_spec(options.mesh);
-  const std::vector<const ReorderAlgorithm*> algorithms = select_algorithms(options.algorithms, mesh);
-
-  Table table;
-  table.title = "Post-transform vertex cache: " + mesh.name;
-  table.parameters = {{"mesh", options.mesh},
-                      {"mesh_faces", mesh.face_count()},
-                      {"mesh_vertices", mesh.vertex_count()},
-                      {"seed", static_cast<std::int64_t>(options.seed)},
-                      {"bandwidth_formula", "acmr * 32 + indices_per_triangle * 2 bytes/triangle"}};
-  table.columns = {{"algo", "algorithm", 0},         {"policy", "policy", 0},
-                   {"cache", "cache", 0},            {"target", "target", 0},
-                   {"triangles", "triangles", 0},    {"vertices", "vertices", 0},
-                   {"misses", "misses", 0},          {"acmr", "ACMR", 3},
-                   {"atvr", "ATVR", 3},              {"indices_per_triangle", "indices/triangle", 3},
-                   {"bandwidth", "bytes/triangle", 2}};
-  if (!options.no_time) table.columns.push_back({"seconds", "seconds", 4});
-
-  // An ordering depends on (algorithm, target, policy) only: computed once, simulated per size.
-  struct Run {
-    Ordering ordering;
-    double seconds;
-  };
-  for (const ReorderAlgorithm* algorithm : algorithms) {
-    for (const VertexCachePolicy policy : policies) {
-      std::map<unsigned, Run> runs;
-      for (const unsigned cache : options.caches) {
-        const unsigned target = options.target ? options.target : cache;
-        auto found = runs.find(target);
-        if (found == runs.end()) {
-          ReorderParams params;
-          params.cache_size = target;
-          params.policy = policy;
-          params.seed = options.seed;
-          params.time_budget_seconds = options.time_budget;
-          const auto start = std::chrono::steady_clock::now();
-          Ordering ordering = algorithm->run(mesh, params);
-          const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-          found = runs.emplace(target, Run{std::move(ordering), seconds}).first;
-        }
-        const Ordering& ordering = found->second.ordering;
-        const VertexStreamStats stats =
-            simulate_vertex_stream(ordering.indices, ordering.type, policy, cache, ordering.restart_index);
-        std::vector<TableCell> row = {algorithm->name, to_string(policy), cache, target, stats.triangles,
-                                      stats.vertices, stats.misses, stats.acmr(), stats.atvr(),
-                                      stats.indices_per_triangle(),
-                                      stats.acmr() * 32.0 + stats.indices_per_triangle() * 2.0};
-        if (!options.no_time) row.emplace_back(found->second.seconds);
-        table.add_row(std::move(row));
-      }
-    }
-  }
-  std::cout << render_table(table, format);
+  std::cout << render_table(vcache_table(mesh, options.mesh, spec), format);
 }
 
 }  // namespace

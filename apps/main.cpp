@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   rastrace::add_adjacency_command(app);
   rastrace::add_render_command(app);
   rastrace::add_compare_command(app);
+  rastrace::add_texsweep_command(app);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,52 @@
+// The texture-cache experiment of Yang, Mitra and Huang, generalised: for each triangle ordering
+// and each rasterization order (Hakura and Gupta), render the scene once, record its texel trace,
+// and sweep texture caches over the trace; beside each row, the ordering's post-transform vertex
+// cache ACMR, so the two caches' trade-off reads off one table.
+//
+// Orderings are applied per scene object. The frame is drawn as a triangle list in the ordering's
+// face order (one draw per object, per-face materials): the triangles reach the rasterizer in the
+// same order as the ordering's own stream (a strip, a list with prefetch degenerates, ...), so the
+// texel trace is the ordering's; the vertex ACMR is measured on the ordering's own index stream.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "apps/render_wiring.h"
+#include "cache_sim/sweep.h"
+#include "core/table.h"
+
+namespace rastrace {
+
+struct TextureExperiment {
+  std::string title;                       // the table's title
+  SceneRenderFlags render;                 // scene, size, filter, wrap, culling (raster, order: per run)
+  std::vector<std::string> orders{"strip", "texgroup"};
+  std::vector<std::string> rasters{"scanline"};
+  std::string texgroup_base = "strip";
+  std::string texgroup_regions = "auto";
+  VertexCacheSpec vertex_cache;            // the post-transform cache orderings target and ACMR uses
+  SweepSpec sweep;
+  std::string trace_dir;                   // where the traces are written (kept)
+  std::string image_dir;                   // empty: no images; else <order>-<raster>.png
+};
+
+struct TextureRun {
+  std::string order;
+  std::string raster;
+  std::string trace_path;
+  std::string image_path;
+  VertexStreamStats vertex;   // the ordering's own index stream through the vertex cache
+  std::uint64_t fragments = 0;
+  std::uint64_t texel_accesses = 0;
+  SweepResult sweep;
+};
+
+// Throws InputError for an unknown ordering, raster, or a scene that fails to load.
+std::vector<TextureRun> run_texture_experiment(const TextureExperiment& experiment);
+
+// One row per run and cache configuration: order, raster, size_bytes, line_bytes, assoc, policy,
+// layout, accesses, misses, miss_rate, bytes_per_fragment, vertex_acmr.
+Table texture_experiment_table(const TextureExperiment& experiment, const std::vector<TextureRun>& runs);
+
+}  // namespace rastrace

@@ -1,0 +1,91 @@
+#include "apps/vcache_table.h"
+
+#include <chrono>
+#include <map>
+#include <sstream>
+
+#include "cache_sim/vertex_cache.h"
+#include "core/error.h"
+
+namespace rastrace {
+
+namespace {
+
+std::vector<const ReorderAlgorithm*> select_algorithms(const std::string& list, const Mesh& mesh) {
+  std::vector<const ReorderAlgorithm*> selected;
+  if (list == "all") {
+    for (const ReorderAlgorithm& algorithm : reorder_algorithms())
+      if (reorder_algorithm_applies(algorithm, mesh)) selected.push_back(&algorithm);
+    return selected;
+  }
+  std::stringstream names(list);
+  std::string name;
+  while (std::getline(names, name, ',')) {
+    if (name.empty()) throw InputError("--algo '" + list + "': empty algorithm name");
+    selected.push_back(&find_reorder_algorithm(name));
+  }
+  return selected;
+}
+
+}  // namespace
+
+Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheTableSpec& spec) {
+  for (const unsigned cache : spec.caches)
+    if (cache == 0) throw InputError("--cache 0: a vertex cache needs at least 1 entry");
+  const std::vector<const ReorderAlgorithm*> algorithms = select_algorithms(spec.algorithms, mesh);
+
+  Table table;
+  table.title = "Post-transform vertex cache: " + mesh.name;
+  table.parameters = {{"mesh", mesh_spec},
+                      {"mesh_faces", mesh.face_count()},
+                      {"mesh_vertices", mesh.vertex_count()},
+                      {"seed", static_cast<std::int64_t>(spec.seed)},
+                      {"bandwidth_formula", "acmr * 32 + indices_per_triangle * 2 bytes/triangle"}};
+  if (spec.iteration_budget) table.parameters.emplace_back("local_iterations", spec.iteration_budget);
+  table.columns = {{"algo", "algorithm", 0},         {"policy", "policy", 0},
+                   {"cache", "cache", 0},            {"target", "target", 0},
+                   {"triangles", "triangles", 0},    {"vertices", "vertices", 0},
+                   {"misses", "misses", 0},          {"acmr", "ACMR", 3},
+                   {"atvr", "ATVR", 3},              {"indices_per_triangle", "indices/triangle", 3},
+                   {"bandwidth", "bytes/triangle", 2}};
+  if (spec.with_time) table.columns.push_back({"seconds", "seconds", 4});
+
+  // An ordering depends on (algorithm, target, policy) only: computed once, simulated per size.
+  struct Run {
+    Ordering ordering;
+    double seconds;
+  };
+  for (const ReorderAlgorithm* algorithm : algorithms) {
+    for (const VertexCachePolicy policy : spec.policies) {
+      std::map<unsigned, Run> runs;
+      for (const unsigned cache : spec.caches) {
+        const unsigned target = spec.target ? spec.target : cache;
+        auto found = runs.find(target);
+        if (found == runs.end()) {
+          ReorderParams params;
+          params.cache_size = target;
+          params.policy = policy;
+          params.seed = spec.seed;
+          params.time_budget_seconds = spec.time_budget;
+          params.iteration_budget = spec.iteration_budget;
+          const auto start = std::chrono::steady_clock::now();
+          Ordering ordering = algorithm->run(mesh, params);
+          const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          found = runs.emplace(target, Run{std::move(ordering), seconds}).first;
+        }
+        const Ordering& ordering = found->second.ordering;
+        const VertexStreamStats stats =
+            simulate_vertex_stream(ordering.indices, ordering.type, policy, cache, ordering.restart_index);
+        std::vector<TableCell> row = {algorithm->name, to_string(policy), cache, target, stats.triangles,
+                                      stats.vertices, stats.misses, stats.acmr(), stats.atvr(),
+                                      stats.indices_per_triangle(),
+                                      stats.acmr() * 32.0 + stats.indices_per_triangle() * 2.0};
+        if (spec.with_time) row.emplace_back(found->second.seconds);
+        table.add_row(std::move(row));
+      }
+    }
+  }
+  return table;
+}
+
+}  // namespace rastrace

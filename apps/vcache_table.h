@@ -1,0 +1,29 @@
+// The post-transform vertex cache under each ordering, as `rastrace vcache` and the report print
+// it: one row per algorithm, policy and cache size with ACMR, ATVR, misses, indices per triangle,
+// Hoppe's bandwidth (ACMR * 32 + indices per triangle * 2 bytes per triangle) and run time.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/table.h"
+#include "reorder/ordering.h"
+
+namespace rastrace {
+
+struct VcacheTableSpec {
+  std::string algorithms = "all";  // "all" (those that apply to the mesh) or "a,b,c"
+  std::vector<unsigned> caches = {8, 12, 16, 20, 24, 32};
+  std::vector<VertexCachePolicy> policies = {VertexCachePolicy::Fifo};
+  unsigned target = 0;  // 0: each algorithm orders for the simulated size
+  std::uint64_t seed = 1;
+  double time_budget = 60.0;
+  std::uint64_t iteration_budget = 0;  // local optimization; 0: until no improvement
+  bool with_time = true;  // run times differ between runs: leave them out for byte-identical tables
+};
+
+// Throws InputError for an unknown algorithm or a cache of 0 entries.
+Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheTableSpec& spec);
+
+}  // namespace rastrace
