@@ -6,6 +6,7 @@
 
 #include "apps/cache_report.h"
 #include "apps/commands.h"
+#include "apps/sweep_flags.h"
 #include "core/error.h"
 #include "core/units.h"
 
@@ -14,27 +15,19 @@ namespace rastrace {
 void add_sweep_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand("sweep", "Sweep cache sizes, lines, associativities, policies and layouts over a trace");
   struct Options {
-    std::string trace, sizes = "1KiB..64KiB", lines = "64B", assocs = "4", policies = "lru", layouts = "linear";
-    std::string texel = "4B", align = "4KiB", stride = "32B", source, entries, format = "md", output, plot;
-    std::uint64_t seed = 1;
+    std::string trace, stride = "32B", source, entries, format = "md", output, plot;
+    SweepFlags sweep;
     unsigned threads = 0;
     bool keep_vertex_cache = false;
   };
   auto o = std::make_shared<Options>();
   command->add_option("trace", o->trace, "Trace file: rastrace trace (.rtrace), .csv export or Dinero .din")->required();
-  command->add_option("--size", o->sizes, "Cache sizes: list and/or power-of-two ranges, e.g. 1KiB..64KiB")->capture_default_str();
-  command->add_option("--line", o->lines, "Line sizes, e.g. 32B,64B,128B")->capture_default_str();
-  command->add_option("--assoc", o->assocs, "Associativities: numbers and/or 'full', e.g. 1,2,4,full")->capture_default_str();
-  command->add_option("--policy", o->policies, "Replacement policies: fifo,lru,random,opt")->capture_default_str();
-  command->add_option("--layout", o->layouts, "Texture layouts: linear,block2,block4,block8,block16,morton")->capture_default_str();
-  command->add_option("--texel", o->texel, "Texel size in bytes")->capture_default_str();
-  command->add_option("--align", o->align, "Alignment of every texture level's base")->capture_default_str();
+  add_sweep_flags(*command, o->sweep);
   command->add_option("--source", o->source, "Accesses to simulate: texel, vertex (vertex buffer bytes) or address (din); "
                                               "default: what the trace holds");
   command->add_option("--stride", o->stride, "Vertex size in bytes for --source vertex")->capture_default_str();
   command->add_option("--entries", o->entries, "Sweep post-transform vertex caches instead: entry counts, e.g. 4..64 "
                                                "(policies fifo,lru)");
-  command->add_option("--seed", o->seed, "Seed of the random policy")->capture_default_str();
   command->add_option("--threads", o->threads, "Worker threads (0: one per core)")->capture_default_str();
   command->add_option("--format", o->format, "Table format: md, csv, latex or json")->capture_default_str();
   command->add_option("-o,--output", o->output, "Write the table to this file (atomically) instead of stdout");
@@ -58,7 +51,7 @@ void add_sweep_command(CLI::App& app) {
         entries.push_back(static_cast<unsigned>(k));
       }
       std::vector<VertexCachePolicy> policies;
-      for (const std::string& p : split_list(o->policies, "--policy")) policies.push_back(parse_vertex_cache_policy(p));
+      for (const std::string& p : split_list(o->sweep.policies, "--policy")) policies.push_back(parse_vertex_cache_policy(p));
       const auto rows = run_vertex_sweep(o->trace, policies, entries, !o->keep_vertex_cache);
       parameters.emplace_back("vertex_cache_per_draw", o->keep_vertex_cache ? "kept" : "flushed");
       const Table table = vertex_cache_table("Post-transform vertex cache sweep", parameters, rows);
@@ -66,44 +59,15 @@ void add_sweep_command(CLI::App& app) {
       return;
     }
 
-    SweepSpec spec;
+    SweepSpec spec = sweep_spec_from(o->sweep);
     spec.source = o->source.empty() ? default_source(summary) : parse_sweep_source(o->source);
-    spec.sizes = parse_byte_size_list(o->sizes, "--size");
-    spec.lines.clear();
-    for (const std::uint64_t l : parse_byte_size_list(o->lines, "--line")) {
-      if (l > (1u << 30)) throw InputError("--line: " + std::to_string(l) + " bytes: expected at most 1GiB");
-      spec.lines.push_back(static_cast<std::uint32_t>(l));
-    }
-    spec.assocs.clear();
-    for (const std::string& a : split_list(o->assocs, "--assoc")) {
-      if (a == "full") {
-        spec.assocs.push_back(0);
-        continue;
-      }
-      for (const std::uint64_t w : parse_count_list(a, "--assoc")) {
-        if (w == 0 || w > (1u << 31)) throw InputError("--assoc: " + a + ": expected a number of ways >= 1 or 'full'");
-        spec.assocs.push_back(static_cast<std::uint32_t>(w));
-      }
-    }
-    spec.policies.clear();
-    for (const std::string& p : split_list(o->policies, "--policy")) spec.policies.push_back(parse_replacement_policy(p));
-    spec.layouts.clear();
-    const std::uint64_t texel = parse_byte_size(o->texel, "--texel");
-    const std::uint64_t align = parse_byte_size(o->align, "--align");
-    for (const std::string& l : split_list(o->layouts, "--layout")) {
-      LayoutSpec layout = parse_layout(l);
-      layout.texel_bytes = static_cast<std::uint32_t>(std::min<std::uint64_t>(texel, 1u << 20));
-      layout.alignment = align;
-      spec.layouts.push_back(layout);
-    }
     spec.stride = static_cast<std::uint32_t>(std::min<std::uint64_t>(parse_byte_size(o->stride, "--stride"), 1u << 20));
-    spec.seed = o->seed;
 
     const SweepResult result = run_sweep(o->trace, spec, o->threads);
     for (const std::string& skipped : result.skipped) std::cerr << "rastrace sweep: skipped " << skipped << "\n";
     if (spec.source == SweepSource::Texel) {
-      parameters.emplace_back("texel_bytes", texel);
-      parameters.emplace_back("level_alignment_bytes", align);
+      parameters.emplace_back("texel_bytes", spec.layouts.front().texel_bytes);
+      parameters.emplace_back("level_alignment_bytes", spec.layouts.front().alignment);
     } else if (spec.source == SweepSource::VertexBuffer) {
       parameters.emplace_back("vertex_stride_bytes", spec.stride);
     }
