@@ -78,8 +78,10 @@ class LookaheadCache {
         std::rotate(list.begin(), list.begin() + std::ptrdiff_t(i), list.begin() + std::ptrdiff_t(i) + 1);
         return true;
       }
-    if (list.size() < k_) list.push_back(v);
-    else list.back() = v;
+    if (list.size() < k_)
+      list.push_back(v);
+    else
+      list.back() = v;
     std::rotate(list.begin(), list.end() - 1, list.end());
     return false;
   }
@@ -233,7 +235,8 @@ class Greedy {
   std::uint32_t fewest_neighbors_face() {
     for (unsigned b = 0; b < 4; ++b) {
       std::vector<std::uint32_t>& bucket = buckets_[b];
-      while (!bucket.empty() && (processed(bucket.back()) || unvisited_neighbors_[bucket.back()] != b)) bucket.pop_back();
+      while (!bucket.empty() && (processed(bucket.back()) || unvisited_neighbors_[bucket.back()] != b))
+        bucket.pop_back();
       if (!bucket.empty()) return bucket.back();
     }
     return kNoFace;
@@ -251,8 +254,8 @@ class Greedy {
         const std::uint32_t* fv = idx_ + 3 * std::size_t(f);
         const int cached = int(cache_.contains(fv[0])) + int(cache_.contains(fv[1])) + int(cache_.contains(fv[2]));
         const int neighbors = unvisited_neighbors_[f];
-        if (cached > best_cached || (cached == best_cached && (neighbors < best_neighbors ||
-                                                               (neighbors == best_neighbors && f < best)))) {
+        if (cached > best_cached ||
+            (cached == best_cached && (neighbors < best_neighbors || (neighbors == best_neighbors && f < best)))) {
           best = f;
           best_cached = cached;
           best_neighbors = neighbors;
@@ -293,9 +296,12 @@ class Greedy {
         c = kNoCorner;
         while (c == kNoCorner) {
           std::uint32_t q;
-          if (main_head < queue_.size()) q = queue_[main_head++];
-          else if (sim_head < sim_queue_.size()) q = sim_queue_[sim_head++];
-          else break;
+          if (main_head < queue_.size())
+            q = queue_[main_head++];
+          else if (sim_head < sim_queue_.size())
+            q = sim_queue_[sim_head++];
+          else
+            break;
           if (!sim_visited(q / 3)) c = q;
         }
         if (c == kNoCorner) break;
@@ -320,8 +326,10 @@ class Greedy {
         continue;
       }
       const std::uint32_t outer = cross(f, (e + 1) % 3);
-      if (outer != kNoCorner && !sim_visited(outer / 3)) c = outer;
-      else event = visited;  // the strip cannot continue
+      if (outer != kNoCorner && !sim_visited(outer / 3))
+        c = outer;
+      else
+        event = visited;  // the strip cannot continue
     }
     return Score{hits, visited};
   }

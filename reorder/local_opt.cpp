@@ -17,7 +17,7 @@ namespace rastrace {
 
 namespace {
 
-constexpr int kCaches = 3;               // sizes k-1, k, k+1
+constexpr int kCaches = 3;                 // sizes k-1, k, k+1
 constexpr std::int64_t kStripCost = 6000;  // 6 bytes per strip, scaled by 1000
 
 std::uint64_t splitmix64(std::uint64_t& state) {
@@ -64,6 +64,11 @@ struct Segment {
   std::uint32_t start = 0;  // F' position of its first face
   std::uint32_t size() const { return hi - lo + 1; }
 };
+struct CostModel {
+  unsigned sizes[kCaches] = {0, 0, 0};  // FIFO entries; 0: cache not modelled
+  std::int64_t weights[kCaches] = {0, 0, 0};
+  std::int64_t strip_cost = 0;
+};
 struct Perturbation {
   enum Type : std::uint8_t { Reflect, Insert1, Insert2 } type = Reflect;
   std::uint32_t x = 0, y = 0;
@@ -72,15 +77,33 @@ struct Perturbation {
 
 class Local {
  public:
-  Local(const Mesh& mesh, const MeshTopology& topology, const ReorderParams& params, std::vector<std::uint32_t>& order)
+  // Hoppe's cost for a FIFO of k entries.
+  static CostModel hoppe(unsigned k) {
+    CostModel model;
+    model.sizes[0] = k > 1 ? k - 1 : 0;
+    model.sizes[1] = k;
+    model.sizes[2] = k + 1;
+    model.weights[0] = k > 1 ? 3 : 0;
+    model.weights[1] = 32000;
+    model.weights[2] = 2;
+    model.strip_cost = kStripCost;
+    return model;
+  }
+  // Vertices sent (Yang et al.'s strip cost): with a one-entry cache every read is a miss.
+  static CostModel vertices_sent() {
+    CostModel model;
+    model.sizes[1] = 1;
+    model.weights[1] = 1;
+    return model;
+  }
+
+  Local(const Mesh& mesh, const MeshTopology& topology, const CostModel& model, std::vector<std::uint32_t>& order)
       : mesh_(mesh), t_(topology), idx_(mesh.indices.data()), F_(order), m_(static_cast<std::uint32_t>(order.size())) {
-    const unsigned k = params.cache_size;
-    size_[0] = k > 1 ? k - 1 : 0;
-    size_[1] = k;
-    size_[2] = k + 1;
-    weight_[0] = k > 1 ? 3 : 0;
-    weight_[1] = 32000;
-    weight_[2] = 2;
+    for (int c = 0; c < kCaches; ++c) {
+      size_[c] = model.sizes[c];
+      weight_[c] = size_[c] ? model.weights[c] : 0;
+    }
+    strip_cost_ = model.strip_cost;
     pos_.resize(t_.face_count);
     for (int c = 0; c < kCaches; ++c) {
       fwd_[c].assign(t_.face_count, 0);
@@ -123,7 +146,8 @@ class Local {
           break;
         }
         if ((stats.iterations & 63) == 0 &&
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > params.time_budget_seconds) {
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >
+                params.time_budget_seconds) {
           out_of_budget = true;
           break;
         }
@@ -249,7 +273,7 @@ class Local {
       const std::uint32_t f = F_[q];
       cost_ += fwd_cost_[f];
       rev_prefix_[q + 1] = rev_prefix_[q] + rev_cost_[f] - fwd_cost_[f];
-      if (q == 0 || !continues(F_[q - 1], f)) cost_ += kStripCost;
+      if (q == 0 || !continues(F_[q - 1], f)) cost_ += strip_cost_;
     }
   }
 
@@ -258,10 +282,11 @@ class Local {
   void load(std::int64_t p, bool reverse) {
     for (int c = 0; c < kCaches; ++c) {
       if (size_[c] == 0) continue;
-      std::uint32_t found[64];
+      std::uint32_t found[256];
       unsigned n = 0;
-      const unsigned want = std::min(size_[c], 64u);
-      for (std::int64_t q = reverse ? p + 1 : p - 1; q >= 0 && q < std::int64_t(m_) && n < want; q += reverse ? 1 : -1) {
+      const unsigned want = std::min(size_[c], 256u);
+      for (std::int64_t q = reverse ? p + 1 : p - 1; q >= 0 && q < std::int64_t(m_) && n < want;
+           q += reverse ? 1 : -1) {
         const std::uint32_t f = F_[std::size_t(q)];
         const std::uint8_t mask = (reverse ? rev_ : fwd_)[c][f];
         if (!mask) continue;
@@ -356,14 +381,14 @@ class Local {
     for (int i = 0; i + 1 < count; ++i) {
       const std::uint32_t a = face_in(F_, seg[i], seg[i].start + seg[i].size() - 1);
       const std::uint32_t b = face_in(F_, seg[i + 1], seg[i + 1].start);
-      delta += continues(a, b) ? 0 : kStripCost;
+      delta += continues(a, b) ? 0 : strip_cost_;
     }
     {
       Segment sorted[5];
       std::copy(seg, seg + count, sorted);
       for (int i = 1; i < count; ++i)  // insertion sort by F position (at most 4 pieces)
         for (int k = i; k > 0 && sorted[k].lo < sorted[k - 1].lo; --k) std::swap(sorted[k], sorted[k - 1]);
-      for (int i = 0; i + 1 < count; ++i) delta -= continues(F_[sorted[i].hi], F_[sorted[i + 1].lo]) ? 0 : kStripCost;
+      for (int i = 0; i + 1 < count; ++i) delta -= continues(F_[sorted[i].hi], F_[sorted[i + 1].lo]) ? 0 : strip_cost_;
     }
     // Misses: from the last untouched face (its successor changed) onwards; F' and F agree
     // before it, so the caches start from F's stored state.
@@ -393,9 +418,8 @@ class Local {
           if (!fifo_[c].access(list[a])) masks[c] |= std::uint8_t(1u << a);
       }
       delta += weighted(masks) - fwd_cost_[f];
-      const bool same_context = g.reversed
-                                    ? prev == at(q + 1) && next == at(q - 1) && before_prev == at(q + 2)
-                                    : prev == at(q - 1) && next == at(q + 1) && before_prev == at(q - 2);
+      const bool same_context = g.reversed ? prev == at(q + 1) && next == at(q - 1) && before_prev == at(q + 2)
+                                           : prev == at(q - 1) && next == at(q + 1) && before_prev == at(q - 2);
       bool same = same_context;
       for (int c = 0; c < kCaches && same; ++c) same = masks[c] == (g.reversed ? rev_ : fwd_)[c][f];
       if (!same) {
@@ -452,6 +476,19 @@ class Local {
       face_mark_[F_[x + 1]] = mark_;
       consider(x + 1);
     }
+    // At a strip's end, the strip's other end: Reflect then turns the whole strip around.
+    const bool starts = x == 0 || !continues(F_[x - 1], f), ends = x + 1 == m_ || !continues(f, F_[x + 1]);
+    if (starts != ends) {
+      std::int64_t y = x;
+      if (starts)
+        while (y + 1 < std::int64_t(m_) && continues(F_[std::size_t(y)], F_[std::size_t(y) + 1])) ++y;
+      else
+        while (y > 0 && continues(F_[std::size_t(y) - 1], F_[std::size_t(y)])) --y;
+      if (face_mark_[F_[std::size_t(y)]] != mark_) {
+        face_mark_[F_[std::size_t(y)]] = mark_;
+        consider(std::uint32_t(y));
+      }
+    }
     const std::uint32_t* v = idx_ + 3 * std::size_t(f);
     for (int i = 0; i < 3; ++i)
       for (const std::uint32_t g : t_.faces_of_vertex(v[i])) {
@@ -476,16 +513,69 @@ class Local {
     Segment seg[5];
     int count = 0;
     if (!segments(p, seg, count)) return false;
+    // F' differs from F only between lo and hi.
+    const std::int64_t lo = !seg[0].reversed && seg[0].lo == 0 ? std::int64_t(seg[0].size()) : 0;
+    const Segment& last = seg[count - 1];
+    const std::int64_t hi = !last.reversed && last.start == last.lo && last.hi == m_ - 1 ? std::int64_t(last.start) - 1
+                                                                                        : std::int64_t(m_) - 1;
     const std::int64_t before = cost_;
     scratch_.resize(m_);
     for (int i = 0; i < count; ++i)
       for (std::uint32_t j = seg[i].start; j < seg[i].start + seg[i].size(); ++j) scratch_[j] = face_in(F_, seg[i], j);
     F_.swap(scratch_);
-    recompute();
+    resimulate(lo, hi);
     if (cost_ < before) return true;
     F_.swap(scratch_);
-    recompute();
+    resimulate(lo, hi);
     return false;
+  }
+
+  // After F changed between positions lo and hi: re-simulates forwards from just before lo and
+  // backwards from just after hi, each until the caches agree with the stored bits again.
+  void resimulate(std::int64_t lo, std::int64_t hi) {
+    for (std::int64_t q = lo; q <= hi; ++q) pos_[F_[std::size_t(q)]] = std::uint32_t(q);
+    for (int dir = 0; dir < 2; ++dir) {
+      const bool reverse = dir == 1;
+      std::int64_t q = reverse ? std::min<std::int64_t>(std::int64_t(m_) - 1, hi + 1) : std::max<std::int64_t>(0, lo - 1);
+      load(q, reverse);
+      unsigned sync[kCaches] = {0, 0, 0};
+      for (; q >= 0 && q < std::int64_t(m_); q += reverse ? -1 : 1) {
+        const std::uint32_t f = F_[std::size_t(q)];
+        std::uint32_t list[3];
+        const unsigned n = reverse ? accesses(at(q + 2), at(q + 1), f, at(q - 1), list)
+                                   : accesses(at(q - 2), at(q - 1), f, at(q + 1), list);
+        std::uint8_t masks[kCaches] = {0, 0, 0};
+        for (int c = 0; c < kCaches; ++c) {
+          if (size_[c] == 0) continue;
+          for (unsigned a = 0; a < n; ++a)
+            if (!fifo_[c].access(list[a])) masks[c] |= std::uint8_t(1u << a);
+        }
+        bool same = reverse ? q < lo - 2 : q > hi + 2;
+        for (int c = 0; c < kCaches; ++c) {
+          std::uint8_t& stored = (reverse ? rev_ : fwd_)[c][f];
+          same = same && stored == masks[c];
+          stored = masks[c];
+        }
+        (reverse ? rev_cost_ : fwd_cost_)[f] = weighted(masks);
+        if (!same) {
+          sync[0] = sync[1] = sync[2] = 0;
+          continue;
+        }
+        bool synced = true;
+        for (int c = 0; c < kCaches; ++c) {
+          sync[c] += unsigned(std::popcount(unsigned(masks[c])));
+          synced = synced && sync[c] >= size_[c];
+        }
+        if (synced) break;
+      }
+    }
+    cost_ = 0;
+    for (std::uint32_t q = 0; q < m_; ++q) {
+      const std::uint32_t f = F_[q];
+      cost_ += fwd_cost_[f];
+      rev_prefix_[q + 1] = rev_prefix_[q] + rev_cost_[f] - fwd_cost_[f];
+      if (q == 0 || !continues(F_[q - 1], f)) cost_ += strip_cost_;
+    }
   }
 
   const Mesh& mesh_;
@@ -495,6 +585,7 @@ class Local {
   std::uint32_t m_;
   unsigned size_[kCaches];
   std::int64_t weight_[kCaches];
+  std::int64_t strip_cost_ = 0;
   std::vector<std::uint32_t> pos_;
   std::vector<std::uint8_t> fwd_[kCaches], rev_[kCaches];  // miss bits per face, in access order
   std::vector<std::int64_t> fwd_cost_, rev_cost_;          // weighted misses per face
@@ -518,9 +609,20 @@ void hoppe_local_optimize(const Mesh& mesh, const MeshTopology& topology, const 
                      std::to_string(topology.face_count));
   LocalStats local_stats;
   if (params.policy == VertexCachePolicy::Fifo) {
-    Local local(mesh, topology, params, order);
+    Local local(mesh, topology, Local::hoppe(params.cache_size), order);
     local.run(params, local_stats);
   }
+  if (stats) *stats = local_stats;
+}
+
+void optimize_vertices_sent(const Mesh& mesh, const MeshTopology& topology, const ReorderParams& params,
+                            std::vector<std::uint32_t>& order, LocalStats* stats) {
+  if (order.size() != topology.face_count)
+    throw InputError("strip: order has " + std::to_string(order.size()) + " faces, mesh has " +
+                     std::to_string(topology.face_count));
+  LocalStats local_stats;
+  Local local(mesh, topology, Local::vertices_sent(), order);
+  local.run(params, local_stats);
   if (stats) *stats = local_stats;
 }
 

@@ -15,7 +15,8 @@
 // is locally best, then applied. Costs are re-evaluated from per-face miss bits stored for the
 // forward and the reverse traversal (3 cache sizes each): the cache state before a slice point
 // is rebuilt from the last k stored misses, and simulation stops once k successive misses agree
-// with the stored ones. x positions in the middle of a strip whose three faces miss fewer than 3
+// with the stored ones (exact for k <= 255; larger caches are still checked by the true cost
+// before a change is kept). After a change only the window around it is re-simulated. x positions in the middle of a strip whose three faces miss fewer than 3
 // times in total are pruned.
 //
 // Budget: ReorderParams::iteration_budget x positions (reproducible), capped by
@@ -46,5 +47,10 @@ struct LocalStats {
 // Improves `order` in place (FIFO, params.cache_size).
 void hoppe_local_optimize(const Mesh& mesh, const MeshTopology& topology, const ReorderParams& params,
                           std::vector<std::uint32_t>& order, LocalStats* stats = nullptr);
+
+// The same search with Yang et al.'s strip cost instead: the vertices the strip stream sends
+// (3 per strip, 1 per continuing face, 1 more per swap); no cache. Used by `strip`.
+void optimize_vertices_sent(const Mesh& mesh, const MeshTopology& topology, const ReorderParams& params,
+                            std::vector<std::uint32_t>& order, LocalStats* stats = nullptr);
 
 }  // namespace rastrace

@@ -15,8 +15,10 @@ std::uint32_t MeshTopology::find_edge(std::uint32_t a, std::uint32_t b) const {
     const std::uint32_t mid = first + (last - first) / 2;
     const std::uint32_t upper = edge_vertices[2 * mid + 1];
     if (upper == hi) return mid;
-    if (upper < hi) first = mid + 1;
-    else last = mid;
+    if (upper < hi)
+      first = mid + 1;
+    else
+      last = mid;
   }
   return kNoEdge;
 }

@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
+
+#include "reorder/local_opt.h"
 
 namespace rastrace {
 
@@ -21,12 +24,6 @@ std::uint32_t neighbor_across(const Mesh& mesh, const MeshTopology& topology, st
 
 }  // namespace
 
-bool strip_continues(const Mesh& mesh, const MeshTopology& topology, std::uint32_t a, std::uint32_t b) {
-  const std::uint32_t* va = mesh.indices.data() + 3 * std::size_t(a);
-  const std::uint32_t* vb = mesh.indices.data() + 3 * std::size_t(b);
-  if (a == b || degenerate(va) || degenerate(vb)) return false;
-  return topology.neighbor(a, 0) == b || topology.neighbor(a, 1) == b || topology.neighbor(a, 2) == b;
-}
 
 StripStats strip_stats(std::span<const std::uint32_t> indices, PrimitiveType type, std::uint32_t restart_index) {
   StripStats stats;
@@ -37,8 +34,10 @@ StripStats strip_stats(std::span<const std::uint32_t> indices, PrimitiveType typ
     for (std::size_t i = 0; i + per <= indices.size(); i += per) {
       const std::uint32_t a = indices[i], b = indices[i + (per == 6 ? 2 : 1)], c = indices[i + (per == 6 ? 4 : 2)];
       ++stats.strips;
-      if (a == b || b == c || a == c) ++stats.swaps;
-      else ++stats.triangles;
+      if (a == b || b == c || a == c)
+        ++stats.swaps;
+      else
+        ++stats.triangles;
     }
     return stats;
   }
@@ -52,8 +51,10 @@ StripStats strip_stats(std::span<const std::uint32_t> indices, PrimitiveType typ
     if (++in_strip == 1) ++stats.strips;
     if (in_strip >= 3) {
       const std::uint32_t a = indices[i - 2], b = indices[i - 1], c = indices[i];
-      if (a == b || b == c || a == c) ++stats.swaps;
-      else ++stats.triangles;
+      if (a == b || b == c || a == c)
+        ++stats.swaps;
+      else
+        ++stats.triangles;
     }
   }
   return stats;
@@ -134,7 +135,7 @@ Ordering strip_ordering(const Mesh& mesh, const MeshTopology& topology, std::vec
   return ordering;
 }
 
-Ordering reorder_strip(const Mesh& mesh, const ReorderParams& /*params*/) {
+Ordering reorder_strip(const Mesh& mesh, const ReorderParams& params) {
   const MeshTopology topology = build_mesh_topology(mesh);
   const std::uint32_t F = topology.face_count;
   const std::uint32_t* idx = mesh.indices.data();
@@ -240,21 +241,45 @@ Ordering reorder_strip(const Mesh& mesh, const ReorderParams& /*params*/) {
   order.reserve(F);
   std::vector<std::uint32_t> candidate, best_strip;
   std::vector<std::vector<std::uint32_t>> strips;
+  std::vector<std::uint32_t> starts, isolated_mark(F, 0);
+  constexpr unsigned kStarts = 8;
   for (;;) {
-    const std::uint32_t f = pop_fewest();
-    if (f == kNoFace) break;
-    // Keep the experiment with the fewest vertices sent per triangle.
+    const std::uint32_t first = pop_fewest();
+    if (first == kNoFace) break;
+    // Candidate starts: the most recent faces with the fewest unvisited neighbours.
+    starts.assign(1, first);
+    {
+      const std::vector<std::uint32_t>& bucket = buckets[unvisited_neighbors[first]];
+      for (std::size_t i = bucket.size(); i-- > 0 && starts.size() < kStarts;) {
+        const std::uint32_t g = bucket[i];
+        if (visited[g] || unvisited_neighbors[g] != unvisited_neighbors[first] ||
+            std::find(starts.begin(), starts.end(), g) != starts.end())
+          continue;
+        starts.push_back(g);
+      }
+    }
+    // Keep the experiment with the fewest vertices sent per triangle, counting the faces it
+    // leaves isolated (each will be a 3-vertex strip of its own).
     double best_cost = 0.0;
     best_strip.clear();
-    for (Mode mode : {Mode::FewestNeighbors, Mode::AvoidSwaps, Mode::Zigzag})
-      for (unsigned exit = 0; exit < 3; ++exit) {
-        const std::uint64_t swaps = grow(f, exit, mode, candidate);
-        const double cost = double(candidate.size() + 2 + swaps) / double(candidate.size());
-        if (best_strip.empty() || cost < best_cost) {
-          best_cost = cost;
-          best_strip.swap(candidate);
+    for (const std::uint32_t f : starts)
+      for (Mode mode : {Mode::FewestNeighbors, Mode::AvoidSwaps, Mode::Zigzag})
+        for (unsigned exit = 0; exit < 3; ++exit) {
+          const std::uint64_t swaps = grow(f, exit, mode, candidate);
+          std::uint64_t isolated = 0;
+          for (const std::uint32_t h : candidate)
+            for (unsigned t = 0; t < 3; ++t) {
+              const std::uint32_t g = topology.neighbor(h, t);
+              if (!live(g) || isolated_mark[g] == stamp || live_neighbors(g) != 0) continue;
+              isolated_mark[g] = stamp;
+              ++isolated;
+            }
+          const double cost = double(candidate.size() + 2 + swaps + 3 * isolated) / double(candidate.size() + isolated);
+          if (best_strip.empty() || cost < best_cost) {
+            best_cost = cost;
+            best_strip.swap(candidate);
+          }
         }
-      }
     for (const std::uint32_t g : best_strip) visit(g);
     strips.push_back(best_strip);
   }
@@ -271,7 +296,8 @@ Ordering reorder_strip(const Mesh& mesh, const ReorderParams& /*params*/) {
                            const std::vector<std::uint32_t>& faces) {
     // Emits tail_faces' last face (if any) followed by faces.
     Evaluated e;
-    if (!tail_faces.empty()) strip_step(mesh, topology, c, tail_faces.back(), faces.empty() ? kNoFace : first_next, ignore);
+    if (!tail_faces.empty())
+      strip_step(mesh, topology, c, tail_faces.back(), faces.empty() ? kNoFace : first_next, ignore);
     for (std::size_t i = 0; i < faces.size(); ++i) {
       if (i + 1 == faces.size()) e.before_last = c;
       strip_step(mesh, topology, c, faces[i], i + 1 < faces.size() ? faces[i + 1] : kNoFace, ignore);
@@ -286,7 +312,8 @@ Ordering reorder_strip(const Mesh& mesh, const ReorderParams& /*params*/) {
     Evaluated forward = evaluate_from(StripCursor{}, kNoFace, kEmpty, strip);
     std::reverse(strip.begin(), strip.end());
     Evaluated backward = evaluate_from(StripCursor{}, kNoFace, kEmpty, strip);
-    if (backward.sent < forward.sent) eval[id] = backward;
+    if (backward.sent < forward.sent)
+      eval[id] = backward;
     else {
       std::reverse(strip.begin(), strip.end());
       eval[id] = forward;
@@ -313,7 +340,8 @@ Ordering reorder_strip(const Mesh& mesh, const ReorderParams& /*params*/) {
         const std::uint32_t tail = s.back();
         for (unsigned k = 0; k < 3 && !joined; ++k) {
           const std::uint32_t g = topology.neighbor(tail, k);
-          if (g == kNoFace || end_of[g] == kNone || end_of[g] == id || !strip_continues(mesh, topology, tail, g)) continue;
+          if (g == kNoFace || end_of[g] == kNone || end_of[g] == id || !strip_continues(mesh, topology, tail, g))
+            continue;
           const std::uint32_t other = end_of[g];
           appended = strips[other];
           if (appended.front() != g) std::reverse(appended.begin(), appended.end());
@@ -335,6 +363,156 @@ Ordering reorder_strip(const Mesh& mesh, const ReorderParams& /*params*/) {
     end_of[s.front()] = kNone;
     end_of[s.back()] = kNone;
     order.insert(order.end(), s.begin(), s.end());
+  }
+  ReorderParams local = params;
+  local.iteration_budget =
+      params.iteration_budget ? params.iteration_budget : std::clamp<std::uint64_t>(F / 2, 1, 4000);
+  auto improve_strips = [&]() {
+    // Strips as runs of continuing faces.
+    std::vector<std::vector<std::uint32_t>> runs;
+    for (std::size_t begin = 0; begin < order.size();) {
+      std::size_t end = begin + 1;
+      while (end < order.size() && strip_continues(mesh, topology, order[end - 1], order[end])) ++end;
+      runs.emplace_back(order.begin() + std::ptrdiff_t(begin), order.begin() + std::ptrdiff_t(end));
+      begin = end;
+    }
+    // Tunnelling (after Stewart's tunnelling for strips, a few steps deep): a strip end touching
+    // the inside of strip B takes one half of B; the other half's new end goes on to touch another
+    // strip, and so on until an end of some strip is reached and joined. Kept when the strips
+    // involved send fewer vertices, one strip fewer.
+    std::vector<std::uint32_t> run_of(F), index_in_run(F);
+    auto reindex = [&]() {
+      for (std::uint32_t r = 0; r < runs.size(); ++r)
+        for (std::uint32_t i = 0; i < runs[r].size(); ++i) {
+          run_of[runs[r][i]] = r;
+          index_in_run[runs[r][i]] = i;
+        }
+    };
+    reindex();
+    // Emission cost of base + faces, continuing from base's evaluation (base_last: its last face).
+    auto extend = [&](const Evaluated& base, std::uint32_t base_last, const std::uint32_t* faces, std::size_t n) {
+      if (n == 0) return base;
+      Evaluated e;
+      StripCursor c = base.before_last;
+      if (base_last != kNoFace) strip_step(mesh, topology, c, base_last, faces[0], ignore);
+      for (std::size_t i = 0; i < n; ++i) {
+        if (i + 1 == n) e.before_last = c;
+        strip_step(mesh, topology, c, faces[i], i + 1 < n ? faces[i + 1] : kNoFace, ignore);
+      }
+      e.sent = c.sent;
+      return e;
+    };
+    std::vector<std::uint64_t> run_sent(runs.size());
+    for (std::uint32_t r = 0; r < runs.size(); ++r)
+      run_sent[r] = extend(Evaluated{}, kNoFace, runs[r].data(), runs[r].size()).sent;
+    // chain(): the strip being rebuilt (its free end `t` last, evaluated as `ev`) meets the strip X
+    // of a neighbour of t: an end of X joins it (done); an inside face of X takes one half of X
+    // into it and the other half continues the chain. `gain`: old minus new vertices so far.
+    struct Step {
+      std::uint32_t x, i;
+      int option;  // 0: X[i], X[i-1].. joins, X[i+1].. rests; 1: X[i].. joins; -1: end join
+    };
+    std::vector<Step> steps;
+    std::uint32_t steps_origin = 0;
+    std::vector<std::uint32_t> scratch;
+    std::function<bool(const Evaluated&, std::uint32_t, int, std::int64_t)> chain =
+        [&](const Evaluated& ev, std::uint32_t t, int depth, std::int64_t gain) -> bool {
+      for (unsigned k = 0; k < 3; ++k) {
+        const std::uint32_t m = topology.neighbor(t, k);
+        if (m == kNoFace || !strip_continues(mesh, topology, t, m)) continue;
+        const std::uint32_t x = run_of[m], i = index_in_run[m];
+        bool used = false;
+        for (const Step& step : steps) used |= step.x == x;
+        if (used || x == steps_origin) continue;
+        const std::vector<std::uint32_t>& X = runs[x];
+        const std::int64_t x_sent = std::int64_t(run_sent[x]);
+        if (i == 0 || i + 1 == X.size()) {
+          scratch.assign(X.begin(), X.end());
+          if (i != 0) std::reverse(scratch.begin(), scratch.end());
+          if (gain + x_sent - std::int64_t(extend(ev, t, scratch.data(), scratch.size()).sent) > 0) {
+            steps.push_back({x, i, -1});
+            return true;
+          }
+          continue;
+        }
+        if (depth == 0) continue;
+        for (int option = 0; option < 2; ++option) {
+          std::vector<std::uint32_t> half, rest;
+          if (option == 0) {
+            half.assign(X.rend() - std::ptrdiff_t(i) - 1, X.rend());    // X[i], X[i-1], .., X[0]
+            rest.assign(X.rbegin(), X.rend() - std::ptrdiff_t(i) - 1);  // .., X[i+1]
+          } else {
+            half.assign(X.begin() + i, X.end());
+            rest.assign(X.begin(), X.begin() + i);  // .., X[i-1]
+          }
+          const std::int64_t next_gain = gain + x_sent - std::int64_t(extend(ev, t, half.data(), half.size()).sent);
+          if (next_gain < -2) continue;  // a final join saves at most 2 more
+          steps.push_back({x, i, option});
+          if (chain(extend(Evaluated{}, kNoFace, rest.data(), rest.size()), rest.back(), depth - 1, next_gain))
+            return true;
+          steps.pop_back();
+        }
+      }
+      return false;
+    };
+    constexpr int kDepth = 3;
+    for (int round = 0; round < 8; ++round) {
+      bool improved = false;
+      for (std::uint32_t a = 0; a < runs.size(); ++a) {
+        for (int side = 0; side < 2 && !runs[a].empty(); ++side) {
+          std::vector<std::uint32_t> current = runs[a];
+          if (side == 1) std::reverse(current.begin(), current.end());
+          steps.clear();
+          steps_origin = a;
+          if (!chain(extend(Evaluated{}, kNoFace, current.data(), current.size()), current.back(), kDepth,
+                     std::int64_t(run_sent[a])))
+            continue;
+          // Rebuild: the strip grows through the steps; each consumed strip's slot takes the next
+          // rebuilt strip, the last one is emptied.
+          std::uint32_t slot = a;
+          for (const Step& step : steps) {
+            const std::vector<std::uint32_t> X = runs[step.x];
+            std::vector<std::uint32_t> rest;
+            if (step.option < 0) {
+              if (step.i == 0)
+                current.insert(current.end(), X.begin(), X.end());
+              else
+                current.insert(current.end(), X.rbegin(), X.rend());
+            } else if (step.option == 0) {
+              current.insert(current.end(), X.rend() - std::ptrdiff_t(step.i) - 1, X.rend());
+              rest.assign(X.rbegin(), X.rend() - std::ptrdiff_t(step.i) - 1);
+            } else {
+              current.insert(current.end(), X.begin() + step.i, X.end());
+              rest.assign(X.begin(), X.begin() + step.i);
+            }
+            runs[slot] = std::move(current);
+            run_sent[slot] = extend(Evaluated{}, kNoFace, runs[slot].data(), runs[slot].size()).sent;
+            current = std::move(rest);
+            slot = step.x;
+          }
+          runs[slot].clear();
+          run_sent[slot] = 0;
+          reindex();
+          improved = true;
+        }
+      }
+      if (!improved) break;
+    }
+    // Each strip takes the direction that sends fewer vertices.
+    order.clear();
+    for (std::vector<std::uint32_t>& run : runs) {
+      if (run.empty()) continue;
+      const std::uint64_t forward = evaluate_from(StripCursor{}, kNoFace, kEmpty, run).sent;
+      std::reverse(run.begin(), run.end());
+      if (evaluate_from(StripCursor{}, kNoFace, kEmpty, run).sent >= forward) std::reverse(run.begin(), run.end());
+      order.insert(order.end(), run.begin(), run.end());
+    }
+  };
+  improve_strips();
+  for (int r = 0; r < 3; ++r) {
+    local.seed = params.seed + std::uint64_t(r);
+    optimize_vertices_sent(mesh, topology, local, order);
+    improve_strips();
   }
   return strip_ordering(mesh, topology, std::move(order));
 }

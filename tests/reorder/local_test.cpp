@@ -32,7 +32,7 @@ TEST(Local, FandiskFifo16ReachesHoppesOptimizedRate) {
   const double local = fifo_acmr(optimized, 16);
   EXPECT_EQ(stats.iterations, 8000u);
   EXPECT_LE(local, 0.61);
-  EXPECT_NEAR(local, 0.6095, 0.0005);
+  EXPECT_NEAR(local, 0.6087, 0.0005);
   EXPECT_LT(local, greedy - 0.015);
   EXPECT_LT(stats.final_cost, stats.initial_cost);
   // Every applied perturbation lowered the true cost: the fast re-evaluation agreed with it.
