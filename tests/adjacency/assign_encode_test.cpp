@@ -138,6 +138,28 @@ TEST(AdjacencyEncoding, DegenerateFacesGetAPrimitiveAndNoEdges) {
   EXPECT_EQ(found, 1u);
 }
 
+TEST(AdjacencyEncoding, AFaceLeftUnpairedAtANonManifoldEdgeTreatsItAsBoundary) {
+  // Three faces on edge (0, 1): faces 0 and 1 pair up (opposite directions); face 2 cannot.
+  Mesh mesh;
+  mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0.5f, 1, 0}, {0.5f, -1, 0}, {0.5f, 0, 1}};
+  mesh.indices = {0, 1, 2, 1, 0, 3, 0, 1, 4};
+  const AdjacencyBuild b = build_adjacency_primitives(mesh);
+  EXPECT_EQ(b.dual.dual_edge_count, 1u);
+  EXPECT_EQ(b.dual.boundary_slot_count, 7u);
+  EXPECT_EQ(b.cover.size, 3u);  // every face touches the boundary
+  EXPECT_TRUE(is_perfect_restricted_assignment(b.dual, b.cover.in_cover, b.assignment));
+  const MeshTopology topology = build_mesh_topology(mesh);
+  std::vector<int> edges(topology.edge_count(), 0);
+  for (std::size_t p = 0; p < b.primitives.size(); ++p) {
+    const std::uint32_t* six = b.primitives.indices.data() + 6 * p;
+    const DecodedPrimitive d = decode_adjacency_primitive(six);
+    for (unsigned e = 0; e < 3; ++e)
+      if (d.role[e] != EdgeRole::Skipped) ++edges[topology.find_edge(six[2 * e], six[(2 * e + 2) % 6])];
+  }
+  for (std::uint32_t e = 0; e < topology.edge_count(); ++e)
+    EXPECT_EQ(edges[e], topology.find_edge(0, 1) == e ? 2 : 1) << e;  // once as a pair, once as a rim
+}
+
 TEST(AdjacencyEncoding, OnePrimitivePerFaceHasTwiceTheIndicesOfTheCover) {
   const auto& built = testing::built_mesh("fandisk.off");
   const AdjacencyPrimitives naive = encode_one_primitive_per_face(built.mesh, built.build.dual);
