@@ -1,6 +1,7 @@
 // `rastrace trace info|convert`: look inside a trace file, and convert between the rastrace
 // container, its CSV export and Dinero din input (din -> container or CSV).
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -33,11 +34,26 @@ void add_trace_command(CLI::App& app) {
                     {"resolution", std::to_string(m.width) + "x" + std::to_string(m.height)},
                     {"filter", m.filter}, {"tool_version", m.tool_version},
                     {"textures", static_cast<std::int64_t>(m.textures.size())}};
-    t.columns = {{"kind", "records of kind", 0}, {"records", "records", 0}, {"chunks", "chunks", 0}};
+    t.columns = {{"kind", "records of kind", 0}, {"records", "records", 0}, {"chunks", "chunks", 0},
+                 {"bytes", "bytes on disk", 0}, {"bytes_per_record", "bytes/record", 3}};
+    // A chunk's bytes: up to the next chunk, the last one up to the index.
+    std::uint64_t index_offset = reader.file_bytes();
+    {
+      std::ifstream in(*info_path, std::ios::binary);
+      in.seekg(static_cast<std::streamoff>(reader.file_bytes() - kFooterBytes));
+      in.read(reinterpret_cast<char*>(&index_offset), 8);
+    }
     for (const RecordKind kind : {RecordKind::Vertex, RecordKind::Texel, RecordKind::Address}) {
       std::int64_t chunks = 0;
-      for (const ChunkInfo& c : reader.chunks()) chunks += c.kind == kind;
-      t.add_row({to_string(kind), reader.records(kind), chunks});
+      std::uint64_t bytes = 0;
+      for (std::size_t i = 0; i < reader.chunks().size(); ++i) {
+        const ChunkInfo& c = reader.chunks()[i];
+        if (c.kind != kind) continue;
+        ++chunks;
+        bytes += (i + 1 < reader.chunks().size() ? reader.chunks()[i + 1].offset : index_offset) - c.offset;
+      }
+      const std::uint64_t records = reader.records(kind);
+      t.add_row({to_string(kind), records, chunks, bytes, records ? double(bytes) / double(records) : 0.0});
     }
     const std::uint64_t records = reader.records(RecordKind::Vertex) + reader.records(RecordKind::Texel) +
                                   reader.records(RecordKind::Address);

@@ -6,6 +6,7 @@
 //   - writer throughput
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 
 #include <meshoptimizer.h>
@@ -99,6 +100,27 @@ void BM_TraceReadDecode_Vertices(benchmark::State& state) {
   state.counters["bytes_per_fetch"] = double(reader.file_bytes()) / double(reader.records(RecordKind::Vertex));
 }
 BENCHMARK(BM_TraceReadDecode_Vertices)->Unit(benchmark::kMillisecond);
+
+// A trace file given in RASTRACE_BENCH_TRACE (e.g. one written by `rastrace render --trace`):
+// every chunk read, checked and decoded.
+void BM_TraceReadDecode_File(benchmark::State& state) {
+  const char* path = std::getenv("RASTRACE_BENCH_TRACE");
+  if (!path) {
+    state.SkipWithError("set RASTRACE_BENCH_TRACE to a trace file");
+    return;
+  }
+  std::uint64_t records = 0;
+  for (auto _ : state) {
+    TraceReader reader(path);
+    for (std::size_t i = 0; i < reader.chunks().size(); ++i) {
+      const DecodedChunk& chunk = reader.read_chunk(i);
+      records += chunk.vertices.size() * (chunk.kind == RecordKind::Vertex) +
+                 chunk.texels.size() * (chunk.kind == RecordKind::Texel);
+    }
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(records));
+}
+BENCHMARK(BM_TraceReadDecode_File)->Unit(benchmark::kMillisecond);
 
 void BM_TraceWrite_Texels(benchmark::State& state) {
   const std::string path = temp("write.rtrace");
