@@ -29,6 +29,7 @@ inline constexpr std::uint32_t kIndexTag = 0x58444E49u;  // "INDX"
 inline constexpr std::uint32_t kChunkHeaderBytes = 32;
 inline constexpr std::uint32_t kFooterBytes = 24;
 inline constexpr std::uint32_t kChunkRecords = 1 << 16;
+inline constexpr std::uint32_t kMaxChunkRecords = 1 << 24;  // readers refuse more (bounded memory)
 inline constexpr std::uint8_t kChunkStartsDraw = 1;
 inline constexpr std::uint8_t kChunkEndsDraw = 2;
 

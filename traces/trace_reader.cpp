@@ -13,8 +13,6 @@ namespace rastrace {
 
 namespace {
 
-constexpr std::uint64_t kMaxRawChunkBytes = std::uint64_t{1} << 30;
-
 template <typename T>
 T load(const std::uint8_t* p) {
   T value;
@@ -96,8 +94,9 @@ TraceReader::TraceReader(const std::string& path) : path_(path), in_(path, std::
   in_.read(reinterpret_cast<char*>(index.data()), static_cast<std::streamsize>(index.size()));
   if (crc32c(index.data(), index.size()) != index_crc)
     throw_at_byte(path, index_offset_, "chunk index checksum mismatch");
-  const std::uint64_t count = load<std::uint64_t>(index.data() + 8);
-  if (load<std::uint32_t>(index.data()) != kIndexTag || index.size() != 16 + count * 24)
+  const std::uint64_t count = index.size() >= 16 ? load<std::uint64_t>(index.data() + 8) : 0;
+  if (index.size() < 16 || load<std::uint32_t>(index.data()) != kIndexTag || count > index.size() / 24 ||
+      index.size() != 16 + count * 24)
     throw_at_byte(path, index_offset_, "malformed chunk index");
   std::uint64_t previous_end = header_end;
   for (std::uint64_t i = 0; i < count; ++i) {
@@ -107,7 +106,8 @@ TraceReader::TraceReader(const std::string& path) : path_(path), in_(path, std::
     c.first_record = load<std::uint64_t>(e + 8);
     c.records = load<std::uint32_t>(e + 16);
     const std::uint8_t kind = e[20];
-    if (kind < 1 || kind > 3 || c.offset < previous_end || c.offset + kChunkHeaderBytes > index_offset_)
+    if (kind < 1 || kind > 3 || c.records > kMaxChunkRecords || c.offset < previous_end ||
+        c.offset + kChunkHeaderBytes > index_offset_)
       throw_at_byte(path, index_offset_ + 16 + i * 24, "chunk index entry " + std::to_string(i) + " is invalid");
     c.kind = static_cast<RecordKind>(kind);
     if (c.first_record != counts_[kind])
@@ -170,7 +170,8 @@ const DecodedChunk& TraceReader::read_chunk(std::size_t i) {
     throw_at_byte(path_, info.offset, where + "checksum mismatch (stored " + hex(crc) + ", computed " + hex(computed) + ")");
   if (kind != static_cast<std::uint8_t>(info.kind) || records != info.records || first != info.first_record)
     throw_at_byte(path_, info.offset, where + "header disagrees with the chunk index");
-  if (raw_bytes > kMaxRawChunkBytes) throw_at_byte(path_, info.offset, where + "implausible decoded size");
+  // Every encoding uses at most 8 bytes per field: a larger claim is corruption, not a big chunk.
+  if (raw_bytes > std::uint64_t{records} * 64 + 4096) throw_at_byte(path_, info.offset, where + "implausible decoded size");
   raw_.resize(raw_bytes);
   const std::size_t got = ZSTD_decompressDCtx(static_cast<ZSTD_DCtx*>(dctx_), raw_.data(), raw_.size(), stored_.data(), stored);
   if (ZSTD_isError(got) || got != raw_bytes)

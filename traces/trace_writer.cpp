@@ -34,7 +34,7 @@ struct TraceWriter::State {
 
 TraceWriter::TraceWriter(const std::string& path, TraceMetadata metadata, TraceWriterOptions options)
     : options_(options) {
-  if (options_.chunk_records == 0 || options_.chunk_records > (1u << 24))
+  if (options_.chunk_records == 0 || options_.chunk_records > kMaxChunkRecords)
     throw InputError("trace chunk size " + std::to_string(options_.chunk_records) + ": expected 1..16777216 records");
   state_ = std::make_unique<State>(path);
   state_->path = path;
