@@ -159,6 +159,30 @@ TEST(ByteCacheDifferential, ThreeCSplitMatchesDineroDefinitions) {
     }
 }
 
+TEST(ByteCacheDifferential, VertexBufferCachesSeeDrawBaseAndStride) {
+  // Draw d's vertex v lives at (d << 40) + v * stride.
+  std::mt19937_64 rng(5);
+  std::vector<VertexFetch> fetches;
+  for (int i = 0; i < 900; ++i) fetches.push_back({static_cast<std::uint32_t>(rng() % 200), i % 3 == 0});
+  CacheBankConfig bank;
+  bank.three_c = false;
+  for (auto policy : {ReplacementPolicy::Lru, ReplacementPolicy::Fifo, ReplacementPolicy::Opt})
+    bank.vertex_buffer.push_back({CacheConfig{1024, 64, 2, policy, 1}, 24});
+  LiveBankSink sink(bank, {});
+  std::vector<std::uint64_t> addresses;
+  for (std::uint32_t draw : {0u, 3u}) {
+    sink.begin_draw({draw, PrimitiveType::TriangleList, kNoRestart});
+    sink.vertex_fetches(fetches);
+    sink.end_draw();
+    for (const VertexFetch& f : fetches) addresses.push_back((std::uint64_t{draw} << 40) + f.vertex * 24ull);
+  }
+  sink.finish();
+  EXPECT_EQ(sink.vertex_buffer_stats()[0].misses, naive_misses(addresses, 1024, 64, 2, "lru"));
+  EXPECT_EQ(sink.vertex_buffer_stats()[1].misses, naive_misses(addresses, 1024, 64, 2, "fifo"));
+  EXPECT_EQ(sink.vertex_buffer_stats()[2].misses, naive_misses(addresses, 1024, 64, 2, "opt"));
+  EXPECT_FALSE(sink.vertex_buffer_stats()[0].has_three_c);
+}
+
 TEST(ByteCacheProperties, OptNeverMissesMoreThanLruOrFifoAndLruIsMonotoneInSize) {
   for (const NamedTrace& trace : traces()) {
     for (const Geometry& g : geometries()) {
