@@ -6,11 +6,18 @@
 // post-transform cache, and the gain over the baseline (kcache on the cover faces). `--order all`
 // adds the naive scheme (one primitive per face, ordered by kcache) for comparison.
 // -o writes the index buffer of the first ordering: raw little-endian uint32 for a .bin file,
-// otherwise text, one 6-index primitive per line.
+// otherwise text, one 6-index primitive per line. --edges draws each ordering through the
+// pipeline with the edge stage (pipeline/edge_stage.h) and adds its counts; --lines writes the
+// first ordering's line image.
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <iostream>
+#include <limits>
 #include <memory>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "apps/commands.h"
 #include "apps/mesh_spec.h"
@@ -18,6 +25,9 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/table.h"
+#include "pipeline/edge_stage.h"
+#include "pipeline/pipeline.h"
+#include "raster/framebuffer.h"
 #include "reorder/adjacency_bound.h"
 #include "reorder/adjacency_build.h"
 #include "reorder/adjacency_order.h"
@@ -34,8 +44,51 @@ struct AdjacencyOptions {
   std::int64_t iterations = -1;
   std::string format = "md";
   std::string output;
+  std::string lines;  // silhouette image of the first ordering
+  bool edges = false;
+  int size = 512;
   bool no_time = false;
 };
+
+// The mesh framed from the front-right-top, as the OSMesa cross-check does.
+void frame_mesh(const Mesh& mesh, glm::mat4& view, glm::mat4& projection) {
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+  for (const glm::vec3& p : mesh.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const glm::vec3 centre = 0.5f * (lo + hi);
+  const float radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);
+  const glm::vec3 eye = centre + glm::normalize(glm::vec3(0.3f, 0.2f, 1.0f)) * radius * 2.6f;
+  view = glm::lookAt(eye, centre, glm::vec3(0, 1, 0));
+  projection = glm::perspective(glm::radians(45.0f), 1.0f, radius * 0.5f, radius * 6.0f);
+}
+
+// Draws the primitives through the pipeline with the edge stage attached.
+struct EdgeRun {
+  PipelineStats pipeline;
+  EdgeStageStats stage;
+};
+EdgeRun run_edge_stage(const Mesh& mesh, const AdjacencyPrimitives& primitives, unsigned cache, int size,
+                       Framebuffer* lines) {
+  glm::mat4 view, projection;
+  frame_mesh(mesh, view, projection);
+  Framebuffer scratch(size, size);
+  PipelineOptions options;
+  options.cache_entries = cache;
+  Pipeline pipeline(scratch, options, nullptr);
+  pipeline.set_camera(view, projection);
+  EdgeStageOptions stage_options;
+  stage_options.draw_sharp = true;
+  EdgeStage stage(mesh, stage_options, lines);
+  pipeline.set_primitive_hook(&stage);
+  DrawCall call;
+  call.indices = primitives.indices;
+  call.type = PrimitiveType::TriangleListAdjacency;
+  pipeline.draw(mesh, glm::mat4(1.0f), call, {});
+  pipeline.finish();
+  return {pipeline.stats(), stage.stats()};
+}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -66,6 +119,7 @@ void write_index_buffer(const std::string& path, const std::vector<std::uint32_t
 void run_adjacency(const AdjacencyOptions& options) {
   const TableFormat format = parse_table_format(options.format);
   if (options.cache == 0) throw InputError("--cache 0: a vertex cache needs at least 1 entry");
+  if (options.size < 16 || options.size > 8192) throw InputError("--size " + std::to_string(options.size) + ": expected 16..8192");
   std::vector<AdjacencyOrder> orders;
   if (options.order == "all") orders = {AdjacencyOrder::Careful, AdjacencyOrder::Fast, AdjacencyOrder::Baseline};
   else if (options.order == "careful" || options.order == "fast" || options.order == "baseline")
@@ -116,12 +170,28 @@ void run_adjacency(const AdjacencyOptions& options) {
                    {"misses", "misses", 0},
                    {"cm_per_v", "CM/V", 3},
                    {"gain", "gain", 3}};
+  const bool edges = options.edges || !options.lines.empty();
+  if (edges) {
+    table.parameters.push_back({"view", "bounding box from (0.3, 0.2, 1), 45 degrees"});
+    table.parameters.push_back({"sharp_degrees", 60.0});
+    table.columns.push_back({"shader_invocations", "VS invocations", 0});
+    table.columns.push_back({"faces_processed", "faces processed", 0});
+    table.columns.push_back({"edges_processed", "edges processed", 0});
+    table.columns.push_back({"silhouette_edges", "silhouettes", 0});
+    table.columns.push_back({"sharp_edges", "sharp", 0});
+  }
+  std::unique_ptr<Framebuffer> line_image;
+  if (!options.lines.empty()) {
+    line_image = std::make_unique<Framebuffer>(options.size, options.size);
+    line_image->clear(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+  }
   if (!options.no_time) {
     table.columns.push_back({"cover_seconds", "cover s", 3});
     table.columns.push_back({"assignment_seconds", "assignment s", 3});
     table.columns.push_back({"order_seconds", "order s", 4});
   }
   const double cover_size = build.cover.size;
+  bool first_row = true;
   auto add_row = [&](const std::string& name, const AdjacencyPrimitives& primitives, double misses, double seconds) {
     std::vector<TableCell> row = {name,
                                   F,
@@ -135,6 +205,19 @@ void run_adjacency(const AdjacencyOptions& options) {
                                   static_cast<std::uint64_t>(misses),
                                   misses / vertices,
                                   misses > 0 ? baseline_misses / misses : 0.0};
+    if (edges) {
+      if (name == "naive") {
+        // One primitive per face has no assigned faces and sees every interior edge twice: the
+        // edge stage's reading does not apply.
+        row.insert(row.end(), 5, TableCell{});
+      } else {
+        const EdgeRun run =
+            run_edge_stage(mesh, primitives, options.cache, options.size, first_row ? line_image.get() : nullptr);
+        row.insert(row.end(), {run.pipeline.vertices_shaded, run.stage.faces(), run.stage.edges,
+                               run.stage.silhouette_edges, run.stage.sharp_edges});
+        first_row = false;
+      }
+    }
     if (!options.no_time) {
       row.emplace_back(build.cover.seconds);
       row.emplace_back(build.assignment.seconds);
@@ -174,6 +257,7 @@ void run_adjacency(const AdjacencyOptions& options) {
     add_row("naive", naive, double(misses_of(naive)), seconds_since(start));
   }
   std::cout << render_table(table, format);
+  if (line_image) line_image->write_colour(options.lines);
   if (!options.output.empty())
     write_index_buffer(options.output, first_indices,
                        "GL_TRIANGLES_ADJACENCY index buffer of " + mesh.name + ", order " + first_name + ", " +
@@ -195,12 +279,18 @@ void add_adjacency_command(CLI::App& app) {
   command->add_option("--format", options->format, "md, csv, latex or json")->capture_default_str();
   command->add_option("-o,--output", options->output,
                       "Write the index buffer of the first ordering (.bin: uint32 little-endian; else text)");
+  command->add_flag("--edges", options->edges,
+                    "Draw each ordering through the pipeline's edge stage: shader invocations, faces and "
+                    "edges processed, silhouette and sharp (60 degree) edges");
+  command->add_option("--lines", options->lines, "Write the first ordering's silhouette/sharp/boundary lines (PNG)");
+  command->add_option("--size", options->size, "Image size for --edges/--lines (square)")->capture_default_str();
   command->add_flag("--no-time", options->no_time, "Leave out the timing columns so outputs compare byte for byte");
   command->footer(
       "Examples:\n"
       "  rastrace adjacency data/meshes/bunny00.off\n"
       "  rastrace adjacency data/meshes/fandisk.off --order fast --cache 12 --format json\n"
-      "  rastrace adjacency data/meshes/triceratops.off --order careful -o triceratops.adj.bin");
+      "  rastrace adjacency data/meshes/triceratops.off --order careful -o triceratops.adj.bin\n"
+      "  rastrace adjacency data/meshes/bunny00.off --order fast --edges --lines bunny-silhouette.png");
   command->callback([options] { run_adjacency(*options); });
 }
 

@@ -66,6 +66,23 @@ TEST(AdjacencyCommand, JsonRowsCarryCoverBoundCacheMissesAndGain) {
   std::filesystem::remove(output);
 }
 
+TEST(AdjacencyCommand, EdgeStageCountsEveryFaceAndEdgeOnceAndWritesTheLines) {
+  const std::string mesh = testing::data_file("meshes/triceratops.off");
+  const std::filesystem::path image = std::filesystem::temp_directory_path() / "rastrace_adjacency_lines.png";
+  std::filesystem::remove(image);
+  const CommandRun r =
+      run("adjacency " + mesh + " --order careful --edges --size 256 --lines " + image.string() + " --format json --no-time");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const nlohmann::json rows = nlohmann::json::parse(r.out);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].at("faces_processed"), 5660);
+  EXPECT_EQ(rows[0].at("edges_processed"), 8490);
+  EXPECT_EQ(rows[0].at("shader_invocations"), rows[0].at("misses"));  // the pipeline's cache = the simulation
+  EXPECT_GT(rows[0].at("silhouette_edges").get<int>(), 100);
+  EXPECT_GT(std::filesystem::file_size(image), 100u);
+  std::filesystem::remove(image);
+}
+
 TEST(AdjacencyCommand, BadInputIsAnErrorWithExitCodeOne) {
   const std::string mesh = testing::data_file("meshes/triceratops.off");
   CommandRun r = run("adjacency " + mesh + " --order bogus");
