@@ -109,10 +109,7 @@ template <bool kFifo>
 class Greedy {
  public:
   Greedy(const Mesh& mesh, const MeshTopology& topology, const ReorderParams& params)
-      : idx_(mesh.indices.data()),
-        t_(topology),
-        k_(params.cache_size),
-        cache_(params.cache_size, topology.vertex_count) {
+      : t_(topology), k_(params.cache_size), cache_(params.cache_size, topology.vertex_count) {
     if (k_ == 0) throw InputError("greedy: cache size 0: expected at least 1 entry");
     const std::uint32_t F = t_.face_count;
     mark_.assign(F, 0);
@@ -121,7 +118,12 @@ class Greedy {
     for (std::uint32_t f = F; f-- > 0;) buckets_[unvisited_neighbors_[f]].push_back(f);
     queue_.reserve(F);
     sim_queue_.reserve(64);
-    across_.assign(3 * std::size_t(F), kNoCorner);
+    faces_.resize(F);
+    for (std::uint32_t f = 0; f < F; ++f)
+      for (std::uint32_t s = 0; s < 3; ++s) {
+        faces_[f].v[s] = mesh.indices[3 * std::size_t(f) + s];
+        faces_[f].across[s] = kNoCorner;
+      }
     for (std::uint32_t f = 0; f < F; ++f)
       for (std::uint32_t s = 0; s < 3; ++s) {
         const std::uint32_t g = t_.neighbor(f, s);
@@ -129,7 +131,7 @@ class Greedy {
         const std::uint32_t edge = t_.face_edges[3 * f + s];
         for (std::uint32_t j = 0; j < 3; ++j)
           if (t_.neighbor(g, j) == f && t_.face_edges[3 * g + j] == edge) {
-            across_[3 * f + s] = 3 * g + j;
+            faces_[f].across[s] = 3 * g + j;
             break;
           }
       }
@@ -187,7 +189,7 @@ class Greedy {
       const std::uint32_t f = c / 3, e = c % 3;
       process(f);
       order.push_back(f);
-      const std::uint32_t* v = idx_ + 3 * std::size_t(f);
+      const std::uint32_t* v = faces_[f].v;
       cache_.access(v[e]);
       cache_.access(v[(e + 1) % 3]);
       cache_.access(v[(e + 2) % 3]);
@@ -221,7 +223,7 @@ class Greedy {
   bool sim_visited(std::uint32_t f) const { return mark_[f] >= sim_num_; }
 
   // The corner entering the neighbour across f's slot s, or kNoCorner.
-  std::uint32_t cross(std::uint32_t f, std::uint32_t s) const { return across_[3 * f + s]; }
+  std::uint32_t cross(std::uint32_t f, std::uint32_t s) const { return faces_[f].across[s]; }
 
   void process(std::uint32_t f) {
     mark_[f] = kProcessed;
@@ -251,7 +253,7 @@ class Greedy {
       if (v == LookaheadCache<kFifo>::kNone) continue;
       for (const std::uint32_t f : t_.faces_of_vertex(v)) {
         if (processed(f)) continue;
-        const std::uint32_t* fv = idx_ + 3 * std::size_t(f);
+        const std::uint32_t* fv = faces_[f].v;
         const int cached = int(cache_.contains(fv[0])) + int(cache_.contains(fv[1])) + int(cache_.contains(fv[2]));
         const int neighbors = unvisited_neighbors_[f];
         if (cached > best_cached ||
@@ -312,7 +314,7 @@ class Greedy {
       ++visited;
       const std::uint32_t f = c / 3, e = c % 3;
       mark_[f] = sim_num_;
-      const std::uint32_t* v = idx_ + 3 * std::size_t(f);
+      const std::uint32_t* v = faces_[f].v;
       // A strip's first face is read from its right vertex (Hoppe's MeshReorder does the same).
       const std::uint32_t first = strip_faces++ == 0 ? (e + 1) % 3 : e;
       hits += cache_.sim_access(v[first]);
@@ -336,7 +338,6 @@ class Greedy {
 
   static constexpr std::uint32_t kProcessed = std::numeric_limits<std::uint32_t>::max();
 
-  const std::uint32_t* idx_;
   const MeshTopology& t_;
   std::uint32_t k_;
   LookaheadCache<kFifo> cache_;
@@ -345,7 +346,13 @@ class Greedy {
   std::vector<std::uint8_t> unvisited_neighbors_;
   std::array<std::vector<std::uint32_t>, 4> buckets_;
   std::vector<std::uint32_t> queue_, sim_queue_;
-  std::vector<std::uint32_t> across_;  // corner entering the neighbour across each face slot
+  // What a simulation reads per face, in one cache line: its vertices and the corner entering
+  // the neighbour across each of its slots (kNoCorner at a border).
+  struct FaceRecord {
+    std::uint32_t v[3];
+    std::uint32_t across[3];
+  };
+  std::vector<FaceRecord> faces_;
   std::size_t queue_head_ = 0;
   GreedyStats stats_;
 };
