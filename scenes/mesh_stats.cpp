@@ -8,6 +8,8 @@
 
 #include <glm/common.hpp>
 
+#include "core/error.h"
+
 namespace rastrace {
 
 MeshStats compute_mesh_stats(const Mesh& mesh) {
@@ -35,6 +37,10 @@ MeshStats compute_mesh_stats(const Mesh& mesh) {
     while (parent[v] != v) v = parent[v] = parent[parent[v]];
     return v;
   };
+  for (std::size_t i = 0; i < mesh.indices.size(); ++i)
+    if (mesh.indices[i] >= mesh.vertex_count())
+      throw InputError(mesh.name + ": face " + std::to_string(i / 3) + " index " + std::to_string(mesh.indices[i]) +
+                       " >= vertex count " + std::to_string(mesh.vertex_count()));
   std::vector<bool> referenced(mesh.vertex_count(), false);
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     const std::uint32_t* t = &mesh.indices[f * 3];

@@ -8,6 +8,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -206,7 +207,8 @@ class AsciiReader {
     std::int64_t value = 0;
     if (!is_integer(type)) {
       double d = 0.0;
-      if (!parse_number(token, d) || d != std::floor(d)) fail(std::string("expected an integer for ") + what + ", found " + describe_token(token));
+      if (!parse_number(token, d) || d != std::floor(d) || std::fabs(d) > 9.0e15)
+        fail(std::string("expected an integer for ") + what + ", found " + describe_token(token));
       return static_cast<std::int64_t>(d);
     }
     if (!parse_number(token, value)) fail(std::string("expected an integer for ") + what + ", found " + describe_token(token));
@@ -326,8 +328,8 @@ void read_body(Reader& reader, const Header& header, const Element* vertex_eleme
         } else {
           const double value = reader.scalar(property.type, what);
           if (property.role != kSkip) {
-            if (!std::isfinite(value))
-              reader.fail("vertex " + std::to_string(record) + ": " + property.name + " is not finite");
+            if (!std::isfinite(value) || std::fabs(value) > std::numeric_limits<float>::max())
+              reader.fail(element.name + " " + std::to_string(record) + ": " + property.name + " is not finite (or beyond float range)");
             values[property.role] = static_cast<float>(value);
           }
         }

@@ -1,6 +1,8 @@
 #include "scenes/text_parse.h"
 
 #include <charconv>
+#include <cmath>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <system_error>
@@ -79,12 +81,15 @@ bool parse_whole(std::string_view token, T& value) {
     if constexpr (std::is_same_v<T, float>) {
       double wide = 0.0;
       if (!parse_whole(token, wide)) return false;
-      value = static_cast<float>(wide);
+      // Beyond float range the conversion is undefined: give the infinity it rounds to.
+      constexpr float kInfinity = std::numeric_limits<float>::infinity();
+      value = std::fabs(wide) > std::numeric_limits<float>::max() ? (wide > 0 ? kInfinity : -kInfinity) : static_cast<float>(wide);
       return true;
     } else if constexpr (std::is_same_v<T, double>) {
       long double wide = 0.0L;
       if (!parse_whole(token, wide)) return false;
-      value = static_cast<double>(wide);
+      constexpr double kInfinity = std::numeric_limits<double>::infinity();
+      value = std::fabs(wide) > std::numeric_limits<double>::max() ? (wide > 0 ? kInfinity : -kInfinity) : static_cast<double>(wide);
       return true;
     }
   }
