@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 
@@ -30,7 +31,10 @@ void Framebuffer::clear(const glm::vec4& colour, float depth) {
   std::uint8_t c[4];
   for (int i = 0; i < 4; ++i)
     c[i] = static_cast<std::uint8_t>(std::lround(std::clamp(colour[i], 0.0f, 1.0f) * 255.0f));
-  for (std::size_t i = 0; i < colour_.size(); i += 4) std::copy(c, c + 4, colour_.begin() + static_cast<std::ptrdiff_t>(i));
+  std::uint32_t packed;
+  std::memcpy(&packed, c, 4);
+  std::uint8_t* out = colour_.data();
+  for (std::size_t i = 0; i < colour_.size(); i += 4) std::memcpy(out + i, &packed, 4);
   std::fill(depth_.begin(), depth_.end(), depth);
   std::fill(write_count_.begin(), write_count_.end(), std::uint16_t{0});
   std::fill(centre_on_edge_.begin(), centre_on_edge_.end(), std::uint8_t{0});

@@ -23,7 +23,11 @@ constexpr std::int64_t kHalf = kOne / 2;                         // pixel centre
 constexpr int kAttributes = 8;  // q = 1/w, s*q, t*q, r*q, g*q, b*q, a*q, z
 constexpr int kTile = 8;
 
-inline std::int64_t to_fixed(float v) { return static_cast<std::int64_t>(std::llround(static_cast<double>(v) * kOne)); }
+// Round half away from zero, as llround, without the library call (|v| < 2^22 is checked first).
+inline std::int64_t to_fixed(float v) {
+  const double scaled = static_cast<double>(v) * kOne;
+  return static_cast<std::int64_t>(scaled >= 0.0 ? scaled + 0.5 : scaled - 0.5);
+}
 
 inline int floor_div(std::int64_t a, std::int64_t b) {
   std::int64_t q = a / b;
@@ -181,28 +185,33 @@ void Rasterizer::traverse(const Setup& s, const TriangleState& state) {
     if (!mask) return;
     ++stats_.quads;
 
-    float a[4][kAttributes];
+    // Barycentric weights of vertices 1 and 2 at the four centres (helper pixels included).
+    float l1[4], l2[4];
     for (int i = 0; i < 4; ++i) {
-      const float l1 = static_cast<float>(pe[1][i]) * s.inv_area;
-      const float l2 = static_cast<float>(pe[2][i]) * s.inv_area;
-      for (int j = 0; j < kAttributes; ++j) a[i][j] = s.base[j] + l1 * s.d1[j] + l2 * s.d2[j];
+      l1[i] = static_cast<float>(pe[1][i]) * s.inv_area;
+      l2[i] = static_cast<float>(pe[2][i]) * s.inv_area;
     }
+    auto attribute = [&](int i, int j) { return s.base[j] + l1[i] * s.d1[j] + l2[i] * s.d2[j]; };
+    float z[4];
     unsigned pass = 0;
     for (int i = 0; i < 4; ++i) {
       if (!(mask >> i & 1u)) continue;
       ++stats_.fragments;
       const std::size_t p = static_cast<std::size_t>(qy + (i >> 1)) * width + static_cast<std::size_t>(qx + (i & 1));
-      if (a[i][7] < depth[p]) pass |= 1u << i;
+      z[i] = attribute(i, 7);
+      if (z[i] < depth[p]) pass |= 1u << i;
     }
     if (!pass) return;
+    float q[4];
+    for (int i = 0; i < 4; ++i) q[i] = attribute(i, 0);
 
     float u[4], v[4];
     float lambda = 0.0f;
     if constexpr (kTextured) {
       for (int i = 0; i < 4; ++i) {
-        const float w = 1.0f / a[i][0];
-        u[i] = a[i][1] * w;
-        v[i] = a[i][2] * w;
+        const float w = 1.0f / q[i];
+        u[i] = attribute(i, 1) * w;
+        v[i] = attribute(i, 2) * w;
       }
       lambda = compute_lod(sampler, tex_w, tex_h, u[1] - u[0], v[1] - v[0], u[2] - u[0], v[2] - v[0]);
     }
@@ -211,14 +220,14 @@ void Rasterizer::traverse(const Setup& s, const TriangleState& state) {
       ++stats_.fragments_passed;
       const int x = qx + (i & 1), y = qy + (i >> 1);
       const std::size_t p = static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x);
-      const float w = 1.0f / a[i][0];
-      glm::vec4 c(a[i][3] * w, a[i][4] * w, a[i][5] * w, a[i][6] * w);
+      const float w = 1.0f / q[i];
+      glm::vec4 c(attribute(i, 3) * w, attribute(i, 4) * w, attribute(i, 5) * w, attribute(i, 6) * w);
       if constexpr (kTextured) {
         site.pixel_x = static_cast<std::uint16_t>(x);
         site.pixel_y = static_cast<std::uint16_t>(y);
         c *= sample_texture(*texture, sampler, u[i], v[i], lambda, recorder_, site);
       }
-      depth[p] = a[i][7];
+      depth[p] = z[i];
       std::uint8_t* out = colour + p * 4;
       for (int ch = 0; ch < 4; ++ch)
         out[ch] = static_cast<std::uint8_t>(std::clamp(c[ch], 0.0f, 1.0f) * 255.0f + 0.5f);

@@ -71,17 +71,25 @@ namespace {
 
 inline int wrap_coordinate(int i, int size, TextureWrap wrap) {
   if (wrap == TextureWrap::Repeat) {
+    if ((size & (size - 1)) == 0) return i & (size - 1);  // two's complement: right for i < 0 too
     const int m = i % size;
     return m < 0 ? m + size : m;
   }
   return std::clamp(i, 0, size - 1);
 }
 
-// floor() of a scaled coordinate as an int, safe for huge or non-finite coordinates: REPEAT
-// only needs the value modulo the size, and anything beyond +-2^24 has lost its fraction anyway.
-inline float safe_coordinate(float u) {
-  if (!std::isfinite(u)) return 0.0f;
-  return std::clamp(u, -16777216.0f, 16777216.0f);
+// Texture coordinates as the sampler may scale them: finite, and small enough that
+// s * 16384 fits an int. REPEAT only needs s modulo 1, which a float beyond +-2^16 has lost
+// anyway, and CLAMP_TO_EDGE clamps such values to the edge texel either way.
+inline float safe_coordinate(float s) {
+  if (!std::isfinite(s)) return 0.0f;
+  return std::clamp(s, -65536.0f, 65536.0f);
+}
+
+// floor() for |u| < 2^31 without a library call (the coordinates are clamped well inside).
+inline int floor_int(float u) {
+  const int i = static_cast<int>(u);
+  return i - (static_cast<float>(i) > u);
 }
 
 inline glm::vec4 fetch(const Image& image, int x, int y) {
@@ -92,21 +100,20 @@ inline glm::vec4 fetch(const Image& image, int x, int y) {
 
 glm::vec4 sample_nearest(const Image& image, unsigned level, const SamplerState& state, float s, float t,
                          TexelRecorder& recorder, const TexelSite& site) {
-  const float u = safe_coordinate(s * static_cast<float>(image.width));
-  const float v = safe_coordinate(t * static_cast<float>(image.height));
-  const int x = wrap_coordinate(static_cast<int>(std::floor(u)), image.width, state.wrap_s);
-  const int y = wrap_coordinate(static_cast<int>(std::floor(v)), image.height, state.wrap_t);
+  const float u = s * static_cast<float>(image.width);
+  const float v = t * static_cast<float>(image.height);
+  const int x = wrap_coordinate(floor_int(u), image.width, state.wrap_s);
+  const int y = wrap_coordinate(floor_int(v), image.height, state.wrap_t);
   recorder.record(site, level, x, y);
   return fetch(image, x, y);
 }
 
 glm::vec4 sample_linear(const Image& image, unsigned level, const SamplerState& state, float s, float t,
                         TexelRecorder& recorder, const TexelSite& site) {
-  const float u = safe_coordinate(s * static_cast<float>(image.width) - 0.5f);
-  const float v = safe_coordinate(t * static_cast<float>(image.height) - 0.5f);
-  const float fu = std::floor(u), fv = std::floor(v);
-  const float a = u - fu, b = v - fv;
-  const int iu = static_cast<int>(fu), iv = static_cast<int>(fv);
+  const float u = s * static_cast<float>(image.width) - 0.5f;
+  const float v = t * static_cast<float>(image.height) - 0.5f;
+  const int iu = floor_int(u), iv = floor_int(v);
+  const float a = u - static_cast<float>(iu), b = v - static_cast<float>(iv);
   const int x0 = wrap_coordinate(iu, image.width, state.wrap_s);
   const int x1 = wrap_coordinate(iu + 1, image.width, state.wrap_s);
   const int y0 = wrap_coordinate(iv, image.height, state.wrap_t);
@@ -134,6 +141,8 @@ inline glm::vec4 sample_level(const Texture& texture, unsigned level, TextureFil
 
 glm::vec4 sample_texture(const Texture& texture, const SamplerState& state, float s, float t, float lambda,
                          TexelRecorder& recorder, const TexelSite& site) {
+  s = safe_coordinate(s);
+  t = safe_coordinate(t);
   // Section 8.14: c = 0.5 only for a LINEAR magnification with a NEAREST_MIPMAP_* minification.
   const float c = (state.mag_filter == TextureFilter::Linear &&
                    state.min_filter == TextureFilter::NearestMipmapNearest)
