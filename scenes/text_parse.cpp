@@ -44,7 +44,7 @@ bool TextLines::next(std::string_view& line) {
   return true;
 }
 
-void TextLines::fail(const std::string& message) const { throw_at_line(path_, line_, message); }
+void TextLines::fail(const std::string& message) const { throw_at_line(path_, line_ == 0 ? 1 : line_, message); }
 
 namespace {
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\f' || c == '\v' || c == '\r' || c == '\n'; }

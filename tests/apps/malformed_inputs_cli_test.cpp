@@ -67,7 +67,7 @@ const std::vector<Malformed>& cases() {
        {"header.off:1: expected an OFF header", "found 'OFX'"}},
       {"OffWrongCounts", "counts.off", [] { return text("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 2 1 0\n"); },
        {"counts.off:7: unexpected data after the last of 1 faces", "wrong counts"}},
-      {"OffEmpty", "empty.off", [] { return text(""); }, {"empty.off:0: empty file: expected an OFF header"}},
+      {"OffEmpty", "empty.off", [] { return text(""); }, {"empty.off:1: empty file: expected an OFF header"}},
       {"OffTextForANumber", "word.off", [] { return text("OFF\n1 0 0\n0 zero 0\n"); },
        {"word.off:3: vertex 0: expected a coordinate, found 'zero'"}},
       {"OffFaceWithTwoVertices", "edge.off", [] { return text("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n"); },
