@@ -2,6 +2,7 @@
 // faces with their winding; tipsy and forsyth against meshoptimizer 0.18 in the same run; the
 // best of ours against the best of meshoptimizer's at FIFO 12, 16, 24 and 32.
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include <gtest/gtest.h>
@@ -141,6 +142,31 @@ TEST(VertexCacheOrders, BestOfOursBeatsBestOfMeshoptimizer) {
         }
       }
       EXPECT_LT(ours, theirs) << name << " FIFO " << cache << ": best of ours is " << best;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rastrace
+
+namespace rastrace {
+namespace {
+
+// Awkward but legal input: no faces; degenerate faces; unreferenced vertices; a NaN coordinate;
+// several components. Every algorithm still returns a permutation.
+TEST(VertexCacheOrders, AwkwardMeshesStillGivePermutations) {
+  Mesh empty;
+  empty.name = "empty";
+  Mesh odd;
+  odd.name = "odd";
+  for (int i = 0; i < 12; ++i) odd.positions.emplace_back(float(i), float(i % 3), 0.0f);
+  odd.positions[5].x = std::nanf("");
+  odd.indices = {0, 1, 2, 2, 1, 3, 4, 4, 4, 5, 6, 5, 7, 8, 9, 9, 8, 10, 1, 1, 3};  // 11 unused
+  for (const Mesh* mesh : {&empty, &odd}) {
+    for (const ReorderAlgorithm& algorithm : reorder_algorithms()) {
+      if (!reorder_algorithm_applies(algorithm, *mesh)) continue;
+      const Ordering ordering = algorithm.run(*mesh, params_for(16));
+      expect_permutation_with_winding(*mesh, ordering, algorithm.name + " on " + mesh->name);
     }
   }
 }
