@@ -29,11 +29,8 @@ inline std::int64_t to_fixed(float v) {
   return static_cast<std::int64_t>(scaled >= 0.0 ? scaled + 0.5 : scaled - 0.5);
 }
 
-inline int floor_div(std::int64_t a, std::int64_t b) {
-  std::int64_t q = a / b;
-  if ((a % b != 0) && ((a < 0) != (b < 0))) --q;
-  return static_cast<int>(q);
-}
+// floor(a / 256): C++20 defines >> on negative values as arithmetic (flooring) shift.
+inline int floor_pixel(std::int64_t a) { return static_cast<int>(a >> kSubpixelBits); }
 
 }  // namespace
 
@@ -71,10 +68,10 @@ void Rasterizer::draw(const RasterVertex& va, const RasterVertex& vb, const Rast
   }
 
   Setup s;
-  int min_x = floor_div(std::min({X[0], X[1], X[2]}) - kHalf + kOne - 1, kOne);  // ceil
-  int min_y = floor_div(std::min({Y[0], Y[1], Y[2]}) - kHalf + kOne - 1, kOne);
-  int max_x = floor_div(std::max({X[0], X[1], X[2]}) - kHalf, kOne);
-  int max_y = floor_div(std::max({Y[0], Y[1], Y[2]}) - kHalf, kOne);
+  int min_x = floor_pixel(std::min({X[0], X[1], X[2]}) - kHalf + kOne - 1);  // ceil
+  int min_y = floor_pixel(std::min({Y[0], Y[1], Y[2]}) - kHalf + kOne - 1);
+  int max_x = floor_pixel(std::max({X[0], X[1], X[2]}) - kHalf);
+  int max_y = floor_pixel(std::max({Y[0], Y[1], Y[2]}) - kHalf);
   min_x = std::max(min_x, 0);
   min_y = std::max(min_y, 0);
   max_x = std::min(max_x, framebuffer_.width() - 1);

@@ -193,6 +193,34 @@ TEST(Pipeline, NearPlaneClippingDrawsOnlyWhatIsInFrontOfTheCamera) {
   for (int i = 0; i < 64 * 64; ++i) EXPECT_LE(fb.write_count()[i], 1);
 }
 
+TEST(Pipeline, GuardBandAndFullSideClippingCoverTheSamePixels) {
+  // A triangle ten times the viewport: the guard band draws it whole, full clipping cuts it into
+  // a fan at the viewport sides; the covered pixels are the same, each written once.
+  const Mesh mesh = clip_space_mesh({{-5, -5, 0}, {15, -5, 0}, {-5, 15.3f, 0}});
+  const std::vector<std::uint32_t> indices = {0, 1, 2};
+  DrawCall call;
+  call.indices = indices;
+  std::vector<std::uint16_t> counts[2];
+  for (int full = 0; full < 2; ++full) {
+    PipelineOptions options;
+    options.guard_band = full ? 0.0f : 4096.0f;
+    Framebuffer fb(64, 64, true);
+    Pipeline pipeline(fb, options, nullptr);
+    pipeline.draw(mesh, glm::mat4(1.0f), call, {});
+    EXPECT_EQ(pipeline.stats().clipped, full ? 1u : 0u);
+    if (full) EXPECT_GE(pipeline.stats().rasterized, 2u);  // the viewport square as a fan
+    else EXPECT_EQ(pipeline.stats().rasterized, 1u);
+    counts[full].assign(fb.write_count(), fb.write_count() + 64 * 64);
+  }
+  EXPECT_EQ(counts[0], counts[1]);
+  std::uint64_t written = 0;
+  for (const std::uint16_t c : counts[1]) {
+    EXPECT_LE(c, 1);
+    written += c;
+  }
+  EXPECT_EQ(written, 64u * 64u);  // the viewport lies inside the triangle
+}
+
 TEST(Pipeline, GouraudLightingMatchesTheFixedFunctionFormula) {
   Lighting lighting;
   lighting.enabled = true;

@@ -35,8 +35,8 @@ std::string temp(const std::string& name) {
 }
 
 TEST(RenderCommand, PrintsTheFrameCostsAsJsonAndWritesTheImageAndTrace) {
-  const std::string image = temp("grid.png"), trace = temp("grid.rtrace");
-  const CommandRun r = run("render builtin:grid --size 160x120 -o " + image + " --trace " + trace +
+  const std::string image = temp("grid.png"), trace = temp("grid.rtrace"), depth = temp("grid.exr");
+  const CommandRun r = run("render builtin:grid --size 160x120 -o " + image + " --trace " + trace + " --depth " + depth +
                     " --raster tiled8 --vcache fifo:16 --tcache 8KiB,64B,2way,lru --layout morton --json");
   ASSERT_EQ(r.status, 0) << r.out;
   const nlohmann::json rows = nlohmann::json::parse(r.out);
@@ -53,6 +53,8 @@ TEST(RenderCommand, PrintsTheFrameCostsAsJsonAndWritesTheImageAndTrace) {
   EXPECT_EQ(row["layout"], "morton");
   EXPECT_TRUE(std::filesystem::exists(image));
   EXPECT_GT(std::filesystem::file_size(trace), 1000u);
+  EXPECT_GT(std::filesystem::file_size(depth), 1000u);
+  std::filesystem::remove(depth);
   std::filesystem::remove(image);
   std::filesystem::remove(trace);
 }
