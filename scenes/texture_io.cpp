@@ -1,6 +1,8 @@
 // Image files through OpenImageIO, converted to 8-bit RGBA with row 0 at the top.
 #include "scenes/texture_io.h"
 
+#include <array>
+#include <cstring>
 #include <filesystem>
 #include <limits>
 
@@ -8,6 +10,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "core/error.h"
+#include "scenes/text_parse.h"
 
 namespace rastrace {
 
@@ -48,18 +51,63 @@ Image decode(OIIO::ImageInput& input, const std::string& name) {
   return image;
 }
 
+// libpng reports errors by longjmp through OpenImageIO, which leaks what the skipped frames
+// owned; so PNG files are checked chunk by chunk (lengths, CRCs, the final IEND) before decoding.
+std::uint32_t crc32(const std::uint8_t* data, std::size_t size) {
+  static const auto table = [] {
+    std::array<std::uint32_t, 256> t{};
+    for (std::uint32_t n = 0; n < 256; ++n) {
+      std::uint32_t c = n;
+      for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xedb88320u ^ (c >> 1) : c >> 1;
+      t[n] = c;
+    }
+    return t;
+  }();
+  std::uint32_t c = 0xffffffffu;
+  for (std::size_t i = 0; i < size; ++i) c = table[(c ^ data[i]) & 0xff] ^ (c >> 8);
+  return c ^ 0xffffffffu;
+}
+
+std::uint32_t big_endian32(const std::uint8_t* p) {
+  return (std::uint32_t{p[0]} << 24) | (std::uint32_t{p[1]} << 16) | (std::uint32_t{p[2]} << 8) | std::uint32_t{p[3]};
+}
+
+void check_png_chunks(const std::string& name, const std::uint8_t* data, std::size_t size) {
+  static constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (size < 8 || std::memcmp(data, kSignature, 8) != 0) return;  // not a PNG: nothing to check
+  std::size_t position = 8;
+  while (true) {
+    if (size - position < 12)
+      throw_at_byte(name, position, "truncated PNG: expected a chunk header (length, type) and CRC, found " +
+                                        std::to_string(size - position) + " bytes");
+    const std::uint32_t length = big_endian32(data + position);
+    const std::string type(reinterpret_cast<const char*>(data + position + 4), 4);
+    if (length > 0x7fffffffu || size - position - 12 < length)
+      throw_at_byte(name, position, "truncated PNG: chunk '" + type + "' of " + std::to_string(length) + " bytes runs past the end of the file");
+    if (crc32(data + position + 4, length + 4) != big_endian32(data + position + 8 + length))
+      throw_at_byte(name, position, "corrupt PNG: chunk '" + type + "' fails its CRC check");
+    if (type == "IEND") return;
+    position += 12 + length;
+  }
+}
+
 }  // namespace
 
 Image load_image(const std::string& path) {
   std::error_code error;
   if (!std::filesystem::exists(path, error)) throw_in_file(path, "no such file (expected a texture image)");
   if (std::filesystem::is_directory(path, error)) throw_in_file(path, "is a directory, expected an image file");
+  {
+    const std::string bytes = read_whole_file(path);
+    check_png_chunks(path, reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+  }
   auto input = OIIO::ImageInput::open(path);
   if (!input) throw_in_file(path, "cannot read image (expected PNG, JPEG, TGA...): " + OIIO::geterror());
   return decode(*input, path);
 }
 
 Image load_image_from_memory(const std::vector<std::uint8_t>& bytes, const std::string& name) {
+  check_png_chunks(name, bytes.data(), bytes.size());
   OIIO::Filesystem::IOMemReader reader(bytes.data(), bytes.size());
   auto input = OIIO::ImageInput::open(name, nullptr, &reader);
   if (!input) throw_in_file(name, "cannot read embedded image (expected PNG, JPEG...): " + OIIO::geterror());

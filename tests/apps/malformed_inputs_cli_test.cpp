@@ -128,7 +128,7 @@ const std::vector<Malformed>& cases() {
        {"tex.json: objects[0].material.texture: expected an existing file; \"none.png\" found neither in"}},
       {"CorruptTextureImage", "image.json",
        [] { return text(R"({"objects": [{"mesh": {"procedural": "plane"}, "material": {"texture": "bad.png"}}]})"); },
-       {"bad.png: cannot read image"},
+       {"bad.png: byte 8: truncated PNG: expected a chunk header"},
        [](const TempDir& dir) { dir.write("bad.png", std::string("\x89PNG\r\n\x1a\n", 8) + "truncated"); }},
       {"BrokenGltfThroughAssimp", "broken.gltf", [] { return text("{ \"asset\": { \"version\": \"2.0\" }, \"meshes\": [ { \"primitives\": 7 } ] }"); },
        {"broken.gltf: assimp cannot read it"}},
