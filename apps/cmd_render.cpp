@@ -43,7 +43,9 @@ void run_render(const RenderCommand& command) {
   tcache.layout = parse_layout(command.layout);
 
   const Scene scene = load_render_scene(command.flags);
-  const OrderedDraws ordered = order_scene(scene, command.flags.order, command.flags.order_cache);
+  ReorderParams order_params;
+  order_params.cache_size = command.flags.order_cache;
+  const OrderedDraws ordered = order_scene(scene, command.flags.order, order_params);
   options.object_draws = ordered.draws;
   const TextureLevels levels = texture_levels(scene);
 

@@ -18,5 +18,6 @@ void add_adjacency_command(CLI::App& app);
 void add_render_command(CLI::App& app);
 void add_compare_command(CLI::App& app);
 void add_texsweep_command(CLI::App& app);
+void add_report_command(CLI::App& app);
 
 }  // namespace rastrace

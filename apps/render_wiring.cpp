@@ -56,7 +56,7 @@ RenderOptions render_options_from(const SceneRenderFlags& flags) {
   return options;
 }
 
-OrderedDraws order_scene(const Scene& scene, const std::string& order, unsigned cache_size) {
+OrderedDraws order_scene(const Scene& scene, const std::string& order, const ReorderParams& params) {
   OrderedDraws out;
   if (order == "original") return out;
   const ReorderAlgorithm& algorithm = find_reorder_algorithm(order);
@@ -65,21 +65,10 @@ OrderedDraws order_scene(const Scene& scene, const std::string& order, unsigned 
   out.draws.resize(scene.objects.size());
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     const Mesh& mesh = scene.objects[o].mesh;
-    ReorderParams params;
-    params.cache_size = cache_size;
     Ordering ordering = algorithm.run(mesh, params);
     out.draws[o].type = ordering.type;
     out.draws[o].restart_index = ordering.restart_index;
-    if (mesh.materials.size() > 1 && !mesh.face_material.empty()) {
-      // Per-face materials follow the faces only where primitive i is face face_order[i].
-      const std::size_t per_primitive = ordering.type == PrimitiveType::TriangleListAdjacency ? 6 : 3;
-      if (ordering.type == PrimitiveType::TriangleStrip ||
-          ordering.indices.size() != ordering.face_order.size() * per_primitive)
-        throw InputError(scene.name + ": ordering '" + order + "' does not keep one primitive per face, so " +
-                         mesh.name + "'s " + std::to_string(mesh.materials.size()) +
-                         " materials cannot follow it: use a triangle-list ordering");
-      for (const std::uint32_t face : ordering.face_order) out.materials[o].push_back(mesh.material_of(face));
-    }
+    if (mesh.materials.size() > 1 && !mesh.face_material.empty()) out.materials[o] = primitive_materials(mesh, ordering);
     out.indices[o] = std::move(ordering.indices);
     out.draws[o].indices = out.indices[o];
     out.draws[o].primitive_materials = out.materials[o];

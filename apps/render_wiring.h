@@ -12,6 +12,7 @@
 #include "cache_sim/cache_config.h"
 #include "cache_sim/live_bank_sink.h"
 #include "pipeline/render_scene.h"
+#include "reorder/ordering.h"
 #include "scenes/scene.h"
 #include "traces/sink.h"
 
@@ -43,8 +44,9 @@ struct OrderedDraws {
   std::vector<std::vector<std::uint32_t>> materials;
   std::vector<DrawCall> draws;
 };
-// Empty when the order is "original" (the file's own triangle lists).
-OrderedDraws order_scene(const Scene& scene, const std::string& order, unsigned cache_size);
+// Empty when the order is "original" (the file's own triangle lists). Each object is drawn from
+// its ordering's own stream (list, strip, ...), every triangle with its face's material.
+OrderedDraws order_scene(const Scene& scene, const std::string& order, const ReorderParams& params);
 
 // "fifo:16" / "lru:32".
 VertexCacheSpec parse_vcache_spec(const std::string& text);

@@ -4,20 +4,11 @@
 
 #include "core/error.h"
 #include "core/units.h"
-#include "reorder/ordering.h"
 #include "traces/trace_writer.h"
 
 namespace rastrace {
 
 namespace {
-
-// One draw per object: the ordering's faces as a triangle list, with their materials.
-struct OrderedScene {
-  std::vector<std::vector<std::uint32_t>> indices;
-  std::vector<std::vector<std::uint32_t>> materials;
-  std::vector<DrawCall> draws;
-  VertexStreamStats vertex;
-};
 
 void accumulate(VertexStreamStats& total, const VertexStreamStats& part) {
   total.lookups += part.lookups;
@@ -28,31 +19,20 @@ void accumulate(VertexStreamStats& total, const VertexStreamStats& part) {
   total.indices_sent += part.indices_sent;
 }
 
-OrderedScene order_for_experiment(const Scene& scene, const TextureExperiment& experiment, const std::string& order) {
-  const ReorderAlgorithm& algorithm = find_reorder_algorithm(order);
-  ReorderParams params;
-  params.cache_size = experiment.vertex_cache.entries;
-  params.policy = experiment.vertex_cache.policy;
-  params.texgroup_base = experiment.texgroup_base;
-  params.texgroup_regions = experiment.texgroup_regions;
-
-  OrderedScene out;
-  const std::size_t objects = scene.objects.size();
-  out.indices.resize(objects);
-  out.materials.resize(objects);
-  out.draws.resize(objects);
-  for (std::size_t o = 0; o < objects; ++o) {
-    const Mesh& mesh = scene.objects[o].mesh;
-    const Ordering ordering = algorithm.run(mesh, params);
-    accumulate(out.vertex, simulate_vertex_stream(ordering.indices, ordering.type, experiment.vertex_cache.policy,
-                                                  experiment.vertex_cache.entries, ordering.restart_index));
-    out.indices[o] = indices_in_face_order(mesh, ordering.face_order);
-    if (!mesh.face_material.empty())
-      for (const std::uint32_t face : ordering.face_order) out.materials[o].push_back(mesh.face_material[face]);
-    out.draws[o].indices = out.indices[o];
-    out.draws[o].primitive_materials = out.materials[o];
+// The orderings' streams through the post-transform cache, object by object (the pipeline
+// flushes the cache between draws).
+VertexStreamStats vertex_stats(const Scene& scene, const OrderedDraws& ordered, const VertexCacheSpec& cache) {
+  VertexStreamStats total;
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    if (ordered.draws.empty()) {
+      accumulate(total, simulate_vertex_stream(scene.objects[o].mesh.indices, PrimitiveType::TriangleList, cache.policy,
+                                               cache.entries));
+    } else {
+      const DrawCall& draw = ordered.draws[o];
+      accumulate(total, simulate_vertex_stream(draw.indices, draw.type, cache.policy, cache.entries, draw.restart_index));
+    }
   }
-  return out;
+  return total;
 }
 
 }  // namespace
@@ -69,7 +49,13 @@ std::vector<TextureRun> run_texture_experiment(const TextureExperiment& experime
 
   std::vector<TextureRun> runs;
   for (const std::string& order : experiment.orders) {
-    const OrderedScene ordered = order_for_experiment(scene, experiment, order);
+    ReorderParams params;
+    params.cache_size = experiment.vertex_cache.entries;
+    params.policy = experiment.vertex_cache.policy;
+    params.texgroup_base = experiment.texgroup_base;
+    params.texgroup_regions = experiment.texgroup_regions;
+    const OrderedDraws ordered = order_scene(scene, order, params);
+    const VertexStreamStats vertex = vertex_stats(scene, ordered, experiment.vertex_cache);
     for (const std::string& raster : experiment.rasters) {
       flags.raster = raster;
       flags.order = order;
@@ -81,7 +67,7 @@ std::vector<TextureRun> run_texture_experiment(const TextureExperiment& experime
       TextureRun run;
       run.order = order;
       run.raster = raster;
-      run.vertex = ordered.vertex;
+      run.vertex = vertex;
       run.trace_path = (std::filesystem::path(experiment.trace_dir) / (order + "-" + raster + ".rtrace")).string();
       TraceMetadata metadata;
       metadata.scene = flags.scene;

@@ -3,10 +3,9 @@
 // and sweep texture caches over the trace; beside each row, the ordering's post-transform vertex
 // cache ACMR, so the two caches' trade-off reads off one table.
 //
-// Orderings are applied per scene object. The frame is drawn as a triangle list in the ordering's
-// face order (one draw per object, per-face materials): the triangles reach the rasterizer in the
-// same order as the ordering's own stream (a strip, a list with prefetch degenerates, ...), so the
-// texel trace is the ordering's; the vertex ACMR is measured on the ordering's own index stream.
+// Orderings are applied per scene object, and each object is drawn from its ordering's own index
+// stream (a strip, a list with prefetch degenerates, ...; order_scene), exactly as `rastrace
+// render --order` draws it, so a live render and the sweep of its trace agree to the miss.
 #pragma once
 
 #include <string>

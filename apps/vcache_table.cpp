@@ -35,7 +35,7 @@ Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheT
   const std::vector<const ReorderAlgorithm*> algorithms = select_algorithms(spec.algorithms, mesh);
 
   Table table;
-  table.title = "Post-transform vertex cache: " + mesh.name;
+  table.title = "Post-transform vertex cache: " + mesh_spec;
   table.parameters = {{"mesh", mesh_spec},
                       {"mesh_faces", mesh.face_count()},
                       {"mesh_vertices", mesh.vertex_count()},

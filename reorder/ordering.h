@@ -53,6 +53,12 @@ std::vector<std::uint32_t> indices_in_face_order(const Mesh& mesh, const std::ve
 // An Ordering that draws the faces as a triangle list in the given order.
 Ordering list_ordering(const Mesh& mesh, std::vector<std::uint32_t> face_order);
 
+// The material of every triangle the ordering's stream assembles, degenerates included (the
+// pipeline's DrawCall::primitive_materials): each drawn triangle takes the material of the mesh
+// face with its vertices, a degenerate one the material before it. So a strip that runs across
+// materials still draws every face with its own. Throws InputError if a triangle is not a face.
+std::vector<std::uint32_t> primitive_materials(const Mesh& mesh, const Ordering& ordering);
+
 // One line per algorithm: defined in its own file.
 Ordering reorder_original(const Mesh& mesh, const ReorderParams& params);
 Ordering reorder_random(const Mesh& mesh, const ReorderParams& params);

@@ -1,4 +1,6 @@
 #include <algorithm>
+#include <array>
+#include <map>
 #include <numeric>
 
 #include "core/error.h"
@@ -53,6 +55,34 @@ Ordering list_ordering(const Mesh& mesh, std::vector<std::uint32_t> face_order) 
   ordering.indices = indices_in_face_order(mesh, face_order);
   ordering.face_order = std::move(face_order);
   return ordering;
+}
+
+std::vector<std::uint32_t> primitive_materials(const Mesh& mesh, const Ordering& ordering) {
+  // Faces by their vertices, rotated so the smallest id comes first (the winding is kept).
+  const auto key = [](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    std::array<std::uint32_t, 3> t{a, b, c};
+    while (t[0] > t[1] || t[0] > t[2]) std::rotate(t.begin(), t.begin() + 1, t.end());
+    return t;
+  };
+  std::map<std::array<std::uint32_t, 3>, std::uint32_t> material_of_face;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f)
+    material_of_face.emplace(key(mesh.indices[3 * f], mesh.indices[3 * f + 1], mesh.indices[3 * f + 2]),
+                             mesh.material_of(f));
+  std::vector<std::uint32_t> materials;
+  std::uint32_t previous = 0;
+  for_each_triangle(ordering.indices, ordering.type, ordering.restart_index,
+                    [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+                      if (a != b && b != c && a != c) {
+                        const auto found = material_of_face.find(key(a, b, c));
+                        if (found == material_of_face.end())
+                          throw InputError(mesh.name + ": the ordering draws triangle (" + std::to_string(a) + ", " +
+                                           std::to_string(b) + ", " + std::to_string(c) +
+                                           "), which is not a face of the mesh");
+                        previous = found->second;
+                      }
+                      materials.push_back(previous);
+                    });
+  return materials;
 }
 
 }  // namespace rastrace
