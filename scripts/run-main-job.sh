@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and runs rastrace's main job on the built-in scene.
+# Installs what is missing, builds, and runs the main job: `rastrace report` on the built-in bunny
+# (vertex cache orderings, texture cache sweeps, plots, frames) into out/report.md.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$here/scripts/setup.sh"
 dir=$(bash "$here/scripts/build.sh")
 cd "$here"
-"$dir/apps/rastrace" info builtin:bunny
+"$dir/apps/rastrace" report builtin:bunny -o out
