@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "reorder/vertex_faces.h"
 
 namespace rastrace {
 
@@ -24,43 +25,10 @@ std::uint32_t MeshTopology::find_edge(std::uint32_t a, std::uint32_t b) const {
 }
 
 MeshTopology build_mesh_topology(const Mesh& mesh) {
-  const std::string name = mesh.name.empty() ? std::string("mesh") : mesh.name;
-  if (mesh.indices.size() % 3 != 0)
-    throw_in_file(name, "index count " + std::to_string(mesh.indices.size()) + " is not a multiple of 3");
-  if (mesh.vertex_count() >= kNoFace || mesh.face_count() >= kNoFace / 3)
-    throw_in_file(name, "mesh too large for 32-bit topology");
-
-  MeshTopology t;
-  t.vertex_count = static_cast<std::uint32_t>(mesh.vertex_count());
-  t.face_count = static_cast<std::uint32_t>(mesh.face_count());
+  // Validates the indices and fills vertex -> faces (a degenerate face lists a repeated vertex once).
+  MeshTopology t = build_vertex_faces(mesh);
   const std::uint32_t V = t.vertex_count, F = t.face_count;
   const std::uint32_t* idx = mesh.indices.data();
-
-  for (std::uint32_t f = 0; f < F; ++f)
-    for (int i = 0; i < 3; ++i)
-      if (idx[3 * f + i] >= V)
-        throw_in_file(name, "face " + std::to_string(f) + ": vertex index " + std::to_string(idx[3 * f + i]) +
-                                " >= vertex count " + std::to_string(V));
-
-  // vertex -> faces (a degenerate face lists a repeated vertex once).
-  t.vertex_face_offsets.assign(V + 1, 0);
-  auto distinct = [&](std::uint32_t f, int i) {
-    const std::uint32_t v = idx[3 * f + i];
-    for (int j = 0; j < i; ++j)
-      if (idx[3 * f + j] == v) return false;
-    return true;
-  };
-  for (std::uint32_t f = 0; f < F; ++f)
-    for (int i = 0; i < 3; ++i)
-      if (distinct(f, i)) ++t.vertex_face_offsets[idx[3 * f + i] + 1];
-  for (std::uint32_t v = 0; v < V; ++v) t.vertex_face_offsets[v + 1] += t.vertex_face_offsets[v];
-  t.vertex_faces.resize(t.vertex_face_offsets[V]);
-  {
-    std::vector<std::uint32_t> fill(t.vertex_face_offsets.begin(), t.vertex_face_offsets.end() - 1);
-    for (std::uint32_t f = 0; f < F; ++f)
-      for (int i = 0; i < 3; ++i)
-        if (distinct(f, i)) t.vertex_faces[fill[idx[3 * f + i]]++] = f;
-  }
 
   // Half-edge slots 3f+i bucketed by lower vertex, sorted by (upper vertex, slot).
   auto slot_lo = [&](std::uint32_t s) {
