@@ -119,7 +119,8 @@ void write_size_plot(const std::string& path, const std::string& title, const st
   for (const std::uint64_t size : sizes)
     tics += (tics.empty() ? "" : ", ") + std::string("'") + format_byte_size(size) + "' " + std::to_string(size);
   script += "set xtics (" + tics + ")\n";
-  script += "set key outside right\nset grid\nset yrange [0:*]\n";
+  // Margins left and right so the first and last size tics keep their labels.
+  script += "set key outside right\nset grid\nset yrange [0:*]\nset offsets graph 0.03, graph 0.03, 0, 0\n";
   std::string quoted_title = title;
   for (char& c : quoted_title)
     if (c == '\'' || c == '\n') c = ' ';
