@@ -6,28 +6,14 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "tests/support/test_data.h"
+#include "support/run_rastrace.h"
+#include "support/test_data.h"
 
 namespace rastrace {
 namespace {
 
-struct CommandRun {
-  int status = -1;
-  std::string out;
-};
-
-CommandRun run(const std::string& arguments) {
-  CommandRun result;
-  const std::string command = testing::rastrace_binary() + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return result;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, n);
-  const int status = pclose(pipe);
-  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+using testing::CommandRun;
+CommandRun run(const std::string& arguments) { return testing::run_rastrace(arguments); }
 
 TEST(AdjacencyCommand, JsonRowsCarryCoverBoundCacheMissesAndGain) {
   const std::string mesh = testing::data_file("meshes/triceratops.off");

@@ -14,7 +14,8 @@
 #include "cache_sim/live_bank_sink.h"
 #include "naive_cache.h"
 #include "tests/support/synthetic_frame.h"
-#include "tests/support/test_data.h"
+#include "support/run_rastrace.h"
+#include "support/test_data.h"
 #include "traces/trace_reader.h"
 #include "traces/trace_writer.h"
 
@@ -23,22 +24,8 @@ namespace {
 
 using ::testing::HasSubstr;
 
-struct ToolRun {
-  int status = -1;
-  std::string out;  // stdout and stderr
-};
-
-ToolRun run(const std::string& arguments) {
-  ToolRun r;
-  const std::string command = testing::rastrace_binary() + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  char buffer[4096];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof(buffer), pipe)) > 0) r.out.append(buffer, n);
-  const int status = pclose(pipe);
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using ToolRun = testing::CommandRun;
+ToolRun run(const std::string& arguments) { return testing::run_rastrace(arguments); }
 
 std::string temp(const std::string& name) {
   return (std::filesystem::temp_directory_path() / ("rastrace_cli_" + std::to_string(::getpid()) + "_" + name)).string();

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/texture_experiment.h"
+#include "support/run_rastrace.h"
 #include "support/test_data.h"
 
 namespace rastrace {
@@ -24,14 +25,9 @@ std::string temporary_dir(const std::string& name) {
 }
 
 std::string run(const std::string& arguments) {
-  std::string output;
-  FILE* pipe = popen((testing::rastrace_binary() + " " + arguments + " 2>/dev/null").c_str(), "r");
-  if (!pipe) return output;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) output.append(buffer, n);
-  EXPECT_EQ(pclose(pipe), 0) << arguments;
-  return output;
+  const testing::CommandRun result = testing::run_rastrace(arguments, /*with_stderr=*/false);
+  EXPECT_EQ(result.status, 0) << arguments;
+  return result.out;
 }
 
 TextureExperiment bunny_strip_against_texgroup(const std::string& trace_dir) {

@@ -7,28 +7,14 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "tests/support/test_data.h"
+#include "support/run_rastrace.h"
+#include "support/test_data.h"
 
 namespace rastrace {
 namespace {
 
-struct CommandRun {
-  int status;
-  std::string out;
-};
-
-CommandRun run(const std::string& arguments) {
-  const std::string command = testing::rastrace_binary() + " " + arguments + " 2>&1";
-  FILE* pipe = ::popen(command.c_str(), "r");
-  CommandRun result{-1, {}};
-  if (!pipe) return result;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, n);
-  const int status = ::pclose(pipe);
-  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+using testing::CommandRun;
+CommandRun run(const std::string& arguments) { return testing::run_rastrace(arguments); }
 
 std::string temp(const std::string& name) {
   return (std::filesystem::temp_directory_path() / ("rastrace-cli-" + std::to_string(::getpid()) + "-" + name)).string();

@@ -5,27 +5,13 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/support/test_data.h"
+#include "support/run_rastrace.h"
+#include "support/test_data.h"
 
 namespace {
 
-struct Result {
-  int status;
-  std::string out;
-};
-
-Result run(const std::string& args) {
-  const std::string command = rastrace::testing::rastrace_binary() + " " + args + " 2>&1";
-  Result result{-1, ""};
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return result;
-  char buffer[4096];
-  std::size_t n;
-  while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) result.out.append(buffer, n);
-  const int status = pclose(pipe);
-  result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+using Result = rastrace::testing::CommandRun;
+Result run(const std::string& arguments) { return rastrace::testing::run_rastrace(arguments); }
 
 TEST(VcacheCli, CastanoRowsAsCsv) {
   const Result r = run("vcache grid:16x16 --algo scanline,grid --cache 12,16,20 --format csv --no-time");
