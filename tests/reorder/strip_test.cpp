@@ -3,7 +3,6 @@
 #include "reorder/strip.h"
 
 #include <algorithm>
-#include <array>
 #include <map>
 
 #include <gtest/gtest.h>
@@ -11,43 +10,11 @@
 #include "reorder/greedy.h"
 #include "scenes/mesh_io.h"
 #include "scenes/procedural.h"
+#include "tests/support/ordering_checks.h"
 #include "tests/support/test_data.h"
 
 namespace rastrace {
 namespace {
-
-// A face as its rotation starting at the smallest vertex: equal for equal windings.
-std::array<std::uint32_t, 3> canonical(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-  if (b < a && b < c) return {b, c, a};
-  if (c < a && c < b) return {c, a, b};
-  return {a, b, c};
-}
-
-// The stream draws exactly the faces of face_order, in that order, with their original winding;
-// everything else it draws is degenerate.
-void expect_faces_in_order_with_winding(const Mesh& mesh, const Ordering& ordering, const std::string& what) {
-  ASSERT_EQ(ordering.face_order.size(), mesh.face_count()) << what;
-  std::vector<std::uint8_t> seen(mesh.face_count(), 0);
-  for (const std::uint32_t f : ordering.face_order) {
-    ASSERT_LT(f, mesh.face_count()) << what;
-    ASSERT_FALSE(seen[f]) << what << ": face " << f << " twice";
-    seen[f] = 1;
-  }
-  std::size_t next = 0;
-  bool ok = true;
-  for_each_triangle(ordering.indices, ordering.type, ordering.restart_index,
-                    [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-                      if (a == b || b == c || a == c) return;
-                      if (next >= ordering.face_order.size()) {
-                        ok = false;
-                        return;
-                      }
-                      const std::uint32_t* v = mesh.indices.data() + 3 * std::size_t(ordering.face_order[next++]);
-                      ok = ok && canonical(a, b, c) == canonical(v[0], v[1], v[2]);
-                    });
-  EXPECT_TRUE(ok) << what << ": a drawn triangle is not the next face with its winding";
-  EXPECT_EQ(next, mesh.face_count()) << what;
-}
 
 const Mesh& test_mesh(const std::string& name) {
   static std::map<std::string, Mesh> meshes;
@@ -80,7 +47,7 @@ TEST(StripOrdering, FanNeedsSwapsZigzagDoesNot) {
   fan.indices = {0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5};
   const MeshTopology topology = build_mesh_topology(fan);
   const Ordering ordering = strip_ordering(fan, topology, {0, 1, 2, 3});
-  expect_faces_in_order_with_winding(fan, ordering, "fan");
+  testing::expect_permutation_with_winding(fan, ordering, "fan");
   const StripStats stats = strip_stats(ordering.indices, ordering.type, ordering.restart_index);
   EXPECT_EQ(stats.strips, 1u);
   EXPECT_EQ(stats.swaps, 1u);  // 1 2 0 3 0 4 5: the pivot repeats once
@@ -89,7 +56,7 @@ TEST(StripOrdering, FanNeedsSwapsZigzagDoesNot) {
   const Mesh grid = make_grid(4, 1);
   const MeshTopology grid_topology = build_mesh_topology(grid);
   const Ordering row = strip_ordering(grid, grid_topology, {0, 1, 2, 3, 4, 5, 6, 7});
-  expect_faces_in_order_with_winding(grid, row, "grid row");
+  testing::expect_permutation_with_winding(grid, row, "grid row");
   const StripStats row_stats = strip_stats(row.indices, row.type, row.restart_index);
   EXPECT_EQ(row_stats.strips, 1u);
   EXPECT_EQ(row_stats.swaps, 0u);
@@ -114,7 +81,7 @@ TEST(Strip, EveryMeshDrawsEachFaceOnceWithItsWinding) {
     ReorderParams params;
     params.iteration_budget = 500;  // the order's validity does not depend on the search's length
     const Ordering ordering = reorder_strip(mesh, params);
-    expect_faces_in_order_with_winding(mesh, ordering, std::string("strip on ") + name);
+    testing::expect_permutation_with_winding(mesh, ordering, std::string("strip on ") + name);
   }
 }
 
@@ -123,7 +90,7 @@ TEST(Strip, GreedyOrderAsStripsKeepsWinding) {
     const Mesh& mesh = test_mesh(name);
     const MeshTopology topology = build_mesh_topology(mesh);
     const Ordering ordering = strip_ordering(mesh, topology, hoppe_greedy_order(mesh, topology, ReorderParams{}));
-    expect_faces_in_order_with_winding(mesh, ordering, std::string("greedy strips on ") + name);
+    testing::expect_permutation_with_winding(mesh, ordering, std::string("greedy strips on ") + name);
   }
 }
 

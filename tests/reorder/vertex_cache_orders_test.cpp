@@ -12,6 +12,7 @@
 #include "reorder/ordering.h"
 #include "scenes/mesh_io.h"
 #include "scenes/procedural.h"
+#include "tests/support/ordering_checks.h"
 #include "tests/support/test_data.h"
 
 namespace rastrace {
@@ -39,44 +40,13 @@ std::uint64_t fifo_misses(std::span<const std::uint32_t> indices, PrimitiveType 
   return simulate_vertex_stream(indices, type, VertexCachePolicy::Fifo, cache, restart).misses;
 }
 
-bool same_winding(const std::uint32_t* face, std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-  for (int r = 0; r < 3; ++r)
-    if (face[r] == a && face[(r + 1) % 3] == b && face[(r + 2) % 3] == c) return true;
-  return false;
-}
-
-// face_order is a permutation, and the stream draws exactly those faces in that order with their
-// original winding (extra triangles, such as Castano's prefetch row, must be degenerate).
-void expect_permutation_with_winding(const Mesh& mesh, const Ordering& ordering, const std::string& what) {
-  ASSERT_EQ(ordering.face_order.size(), mesh.face_count()) << what;
-  std::vector<std::uint8_t> seen(mesh.face_count(), 0);
-  for (const std::uint32_t f : ordering.face_order) {
-    ASSERT_LT(f, mesh.face_count()) << what;
-    ASSERT_FALSE(seen[f]) << what << ": face " << f << " twice";
-    seen[f] = 1;
-  }
-  std::size_t next = 0;
-  bool ok = true;
-  for_each_triangle(ordering.indices, ordering.type, ordering.restart_index,
-                    [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-                      if (next < ordering.face_order.size() &&
-                          same_winding(mesh.indices.data() + 3 * std::size_t(ordering.face_order[next]), a, b, c)) {
-                        ++next;
-                      } else if (a != b && b != c && a != c) {
-                        ok = false;
-                      }
-                    });
-  EXPECT_TRUE(ok) << what << ": a drawn triangle is not the next face of face_order";
-  EXPECT_EQ(next, ordering.face_order.size()) << what;
-}
-
 TEST(VertexCacheOrders, EveryAlgorithmPermutesFacesKeepingWinding) {
   for (const char* name : {"grid", "fandisk", "triceratops", "bunny00"}) {
     const Mesh& mesh = test_mesh(name);
     for (const ReorderAlgorithm& algorithm : reorder_algorithms()) {
       if (!reorder_algorithm_applies(algorithm, mesh)) continue;
       const Ordering ordering = algorithm.run(mesh, params_for(16));
-      expect_permutation_with_winding(mesh, ordering, algorithm.name + " on " + name);
+      testing::expect_permutation_with_winding(mesh, ordering, algorithm.name + " on " + name);
     }
   }
 }
@@ -166,7 +136,7 @@ TEST(VertexCacheOrders, AwkwardMeshesStillGivePermutations) {
     for (const ReorderAlgorithm& algorithm : reorder_algorithms()) {
       if (!reorder_algorithm_applies(algorithm, *mesh)) continue;
       const Ordering ordering = algorithm.run(*mesh, params_for(16));
-      expect_permutation_with_winding(*mesh, ordering, algorithm.name + " on " + mesh->name);
+      testing::expect_permutation_with_winding(*mesh, ordering, algorithm.name + " on " + mesh->name);
     }
   }
 }
