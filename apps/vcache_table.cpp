@@ -4,6 +4,7 @@
 #include <map>
 #include <sstream>
 
+#include "cache_sim/eviction_charged.h"
 #include "cache_sim/vertex_cache.h"
 #include "core/error.h"
 
@@ -32,6 +33,10 @@ std::vector<const ReorderAlgorithm*> select_algorithms(const std::string& list, 
 Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheTableSpec& spec) {
   for (const unsigned cache : spec.caches)
     if (cache == 0) throw InputError("--cache 0: a vertex cache needs at least 1 entry");
+  if (spec.eviction_charged)
+    for (const VertexCachePolicy policy : spec.policies)
+      if (policy != VertexCachePolicy::Fifo)
+        throw InputError("--accounting evictions models NVIDIA Mesh Tools' FIFO: expected --policy fifo");
   const std::vector<const ReorderAlgorithm*> algorithms = select_algorithms(spec.algorithms, mesh);
 
   Table table;
@@ -40,7 +45,8 @@ Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheT
                       {"mesh_faces", mesh.face_count()},
                       {"mesh_vertices", mesh.vertex_count()},
                       {"seed", static_cast<std::int64_t>(spec.seed)},
-                      {"bandwidth_formula", "acmr * 32 + indices_per_triangle * 2 bytes/triangle"}};
+                      {"bandwidth_formula", "acmr * 32 + indices_per_triangle * 2 bytes/triangle"},
+                      {"accounting", spec.eviction_charged ? "evictions (NVIDIA Mesh Tools)" : "misses"}};
   if (spec.iteration_budget) table.parameters.emplace_back("local_iterations", spec.iteration_budget);
   table.columns = {{"algo", "algorithm", 0},         {"policy", "policy", 0},
                    {"cache", "cache", 0},            {"target", "target", 0},
@@ -74,8 +80,10 @@ Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheT
           found = runs.emplace(target, Run{std::move(ordering), seconds}).first;
         }
         const Ordering& ordering = found->second.ordering;
-        const VertexStreamStats stats =
+        VertexStreamStats stats =
             simulate_vertex_stream(ordering.indices, ordering.type, policy, cache, ordering.restart_index);
+        if (spec.eviction_charged)
+          stats.misses = eviction_charged_transforms(ordering.indices, ordering.type, cache, ordering.restart_index);
         std::vector<TableCell> row = {algorithm->name, to_string(policy), cache, target, stats.triangles,
                                       stats.vertices, stats.misses, stats.acmr(), stats.atvr(),
                                       stats.indices_per_triangle(),

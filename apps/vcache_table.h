@@ -21,9 +21,12 @@ struct VcacheTableSpec {
   double time_budget = 60.0;
   std::uint64_t iteration_budget = 0;  // local optimization; 0: until no improvement
   bool with_time = true;  // run times differ between runs: leave them out for byte-identical tables
+  // Count transforms as NVIDIA Mesh Tools charged them (cache_sim/eviction_charged.h), which is
+  // how Castano's grid tables were counted; FIFO only. False: true misses.
+  bool eviction_charged = false;
 };
 
-// Throws InputError for an unknown algorithm or a cache of 0 entries.
+// Throws InputError for an unknown algorithm, a cache of 0 entries, or eviction-charged LRU.
 Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheTableSpec& spec);
 
 }  // namespace rastrace

@@ -11,10 +11,11 @@
 // face_order stays a permutation of the faces, with their original winding.
 //
 // Results (16x16 grid, FIFO): k = 20 gives ACMR 0.564 / ATVR 1.000 (every vertex once) and
-// k = 16 0.598 / 1.059, as the article prints; k = 12 gives 0.598 / 1.059 (306 misses) where the
-// article prints 0.600 / 1.062 (307), and ordered for 8, run on 8 or 16, ATVR 1.118 (323) where
-// its comments say 1.125 (325): one miss per prefetched column after the first more than the
-// article's own code gives under a strict FIFO (meshoptimizer's analyzer agrees with ours).
+// k = 16 0.598 / 1.059, as the article prints. k = 12 gives 306 true misses (0.598 / 1.059) and
+// ordered for 8, run on 8 or 16, 323 (ATVR 1.118); the article prints 307 (0.600 / 1.062) and
+// 325 (1.125) because its simulator charged evictions, not misses: with that accounting
+// (cache_sim/eviction_charged.h, `rastrace vcache --accounting evictions`) this order gives the
+// article's figures exactly.
 // The minimum cache for ATVR 1 on a W x W grid is W + 2. Caches below 3 entries are ordered as for 3
 // (columns one quad wide), the narrowest the construction has.
 // Throws InputError for a mesh that is not a make_grid grid.

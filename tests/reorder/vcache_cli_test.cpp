@@ -29,6 +29,18 @@ TEST(VcacheCli, TargetSetsTheCacheTheOrderIsMadeFor) {
   EXPECT_NE(r.out.find("grid,fifo,16,8,512,289,323,"), std::string::npos) << r.out;
 }
 
+TEST(VcacheCli, EvictionAccountingPrintsCastanosPublishedCounts) {
+  const Result r = run("vcache grid:16x16 --algo grid --cache 12,16,20 --accounting evictions --format csv --no-time");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("# accounting: evictions (NVIDIA Mesh Tools)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("grid,fifo,12,12,512,289,307,"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("grid,fifo,16,16,512,289,306,"), std::string::npos) << r.out;
+  const Result on16 = run("vcache grid:16x16 --algo grid --target 8 --cache 16 --accounting evictions --format csv --no-time");
+  EXPECT_NE(on16.out.find("grid,fifo,16,8,512,289,325,"), std::string::npos) << on16.out;
+  EXPECT_EQ(run("vcache grid:4x4 --algo grid --policy lru --accounting evictions").status, 1);
+  EXPECT_EQ(run("vcache grid:4x4 --algo grid --accounting hits").status, 1);
+}
+
 TEST(VcacheCli, NoTimeOutputIsByteIdenticalBetweenRuns) {
   const std::string args = "vcache grid:12x12 --algo all --cache 12,16 --policy fifo,lru --format json --no-time";
   const Result a = run(args), b = run(args);
