@@ -1,0 +1,73 @@
+// `rastrace reproduce`: published figures beside ours. The exact rows must show no difference;
+// rows without our mesh must stay in the table, empty.
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "apps/reproduce.h"
+#include "core/error.h"
+#include "support/run_rastrace.h"
+
+namespace rastrace {
+namespace {
+
+const ReproducedFigure& find_figure(const std::vector<ReproducedFigure>& figures, const std::string& figure) {
+  for (const ReproducedFigure& f : figures)
+    if (f.figure == figure) return f;
+  throw std::runtime_error("no figure " + figure);
+}
+double value(const TableCell& cell) {
+  return std::holds_alternative<double>(cell.value) ? std::get<double>(cell.value)
+                                                    : double(std::get<std::int64_t>(cell.value));
+}
+
+TEST(Reproduce, CastanoExactRowsHaveNoDifference) {
+  const std::vector<ReproducedFigure> figures = reproduce_castano();
+  for (const char* exact : {"Scanline, FIFO 12: ACMR", "Scanline, FIFO 20: ACMR", "Optimal, FIFO 20: ACMR",
+                            "Optimal, FIFO 16: ACMR", "Optimal, FIFO 12: ACMR"}) {
+    const ReproducedFigure& f = find_figure(figures, exact);
+    EXPECT_NEAR(value(f.ours), value(f.published), 0.0005) << exact;
+  }
+  EXPECT_NEAR(value(find_figure(figures, "Optimal made for FIFO 8, run on 16: ATVR").ours), 1.125, 0.0005);
+  EXPECT_EQ(std::get<std::int64_t>(find_figure(figures, "Smallest FIFO with ATVR 1 (W + 2)").ours.value), 18);
+  // The strict FIFO count is stated where the article's accounting differs from it.
+  EXPECT_NE(find_figure(figures, "Optimal, FIFO 12: ACMR").note.find("strict FIFO: 306 misses (0.598)"),
+            std::string::npos);
+}
+
+TEST(Reproduce, RowsWithoutOurMeshAreKeptEmpty) {
+  const std::vector<ReproducedFigure> figures = reproduce_yang();
+  ASSERT_EQ(figures.size(), 5u);
+  const ReproducedFigure& plane = find_figure(figures, "Plane: strip vertices sent");
+  EXPECT_TRUE(std::holds_alternative<std::monostate>(plane.ours.value));
+  EXPECT_EQ(plane.note, "no such mesh");
+  const ReproducedFigure& triceratops = find_figure(figures, "Triceratops: strip vertices sent");
+  EXPECT_LE(std::get<std::int64_t>(triceratops.ours.value), 6911);
+}
+
+TEST(Reproduce, JsonRowsCarryPublishedOursAndDifference) {
+  const testing::CommandRun run = testing::run_rastrace("reproduce --paper castano --format json", false);
+  ASSERT_EQ(run.status, 0) << run.out;
+  const nlohmann::json rows = nlohmann::json::parse(run.out);
+  ASSERT_EQ(rows.size(), 26u);  // 8 methods x 3 caches, the wrong-size row, the W + 2 row
+  bool seen = false;
+  for (const auto& row : rows) {
+    if (row["figure"] != "Optimal, FIFO 12: ACMR") continue;
+    seen = true;
+    EXPECT_DOUBLE_EQ(row["published"].get<double>(), 0.600);
+    EXPECT_NEAR(row["ours"].get<double>(), 307.0 / 512.0, 1e-12);
+    EXPECT_NEAR(row["difference"].get<double>(), 307.0 / 512.0 - 0.600, 1e-12);
+  }
+  EXPECT_TRUE(seen);
+}
+
+TEST(Reproduce, UnknownPaperIsAnError) {
+  ReproduceOptions options;
+  options.papers = "castano,nosuch";
+  EXPECT_THROW(reproduction_table(options), InputError);
+  EXPECT_EQ(testing::run_rastrace("reproduce --paper nosuch", false).status, 1);
+}
+
+}  // namespace
+}  // namespace rastrace
