@@ -4,6 +4,8 @@
 //   - texel trace size on disk in bytes per access (goal: at most 2 on a rendered frame); here on
 //     the synthetic frame-like trace of tests/support/synthetic_frame.h, labelled as such
 //   - writer throughput
+// Read benchmarks run with read-ahead off (/ahead:0, one thread) and on (/ahead:1, a second
+// thread): wall-clock time, since the work is on two threads.
 #include <unistd.h>
 
 #include <cstdlib>
@@ -71,6 +73,7 @@ void BM_TraceReadDecode_Texels(benchmark::State& state) {
   std::uint64_t records = 0;
   for (auto _ : state) {
     TexelTraceReader reader(path);
+    reader.set_read_ahead(state.range(0) != 0);
     std::span<const TexelAccess> batch;
     while (reader.next(batch)) {
       records += batch.size();
@@ -82,13 +85,14 @@ void BM_TraceReadDecode_Texels(benchmark::State& state) {
   state.counters["bytes_per_access"] = double(reader.file_bytes()) / double(reader.records(RecordKind::Texel));
   state.counters["accesses"] = double(reader.records(RecordKind::Texel));
 }
-BENCHMARK(BM_TraceReadDecode_Texels)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TraceReadDecode_Texels)->ArgName("ahead")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_TraceReadDecode_Vertices(benchmark::State& state) {
   const std::string& path = vertex_trace();
   std::uint64_t records = 0;
   for (auto _ : state) {
     VertexTraceReader reader(path);
+    reader.set_read_ahead(state.range(0) != 0);
     VertexBatch batch;
     while (reader.next(batch)) {
       records += batch.fetches.size();
@@ -99,7 +103,7 @@ void BM_TraceReadDecode_Vertices(benchmark::State& state) {
   const TraceReader reader(path);
   state.counters["bytes_per_fetch"] = double(reader.file_bytes()) / double(reader.records(RecordKind::Vertex));
 }
-BENCHMARK(BM_TraceReadDecode_Vertices)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TraceReadDecode_Vertices)->ArgName("ahead")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // A trace file given in RASTRACE_BENCH_TRACE (e.g. one written by `rastrace render --trace`):
 // every chunk read, checked and decoded.
@@ -112,6 +116,7 @@ void BM_TraceReadDecode_File(benchmark::State& state) {
   std::uint64_t records = 0;
   for (auto _ : state) {
     TraceReader reader(path);
+    reader.set_read_ahead(state.range(0) != 0);
     for (std::size_t i = 0; i < reader.chunks().size(); ++i) {
       const DecodedChunk& chunk = reader.read_chunk(i);
       records += chunk.vertices.size() * (chunk.kind == RecordKind::Vertex) +
@@ -120,7 +125,7 @@ void BM_TraceReadDecode_File(benchmark::State& state) {
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(records));
 }
-BENCHMARK(BM_TraceReadDecode_File)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TraceReadDecode_File)->ArgName("ahead")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_TraceWrite_Texels(benchmark::State& state) {
   const std::string path = temp("write.rtrace");

@@ -1,7 +1,13 @@
 #include "traces/trace_reader.h"
 
+#include <array>
+#include <condition_variable>
 #include <cstring>
+#include <exception>
+#include <fstream>
+#include <mutex>
 #include <sstream>
+#include <thread>
 
 #include <zstd.h>
 
@@ -36,7 +42,177 @@ std::string printable(const char* bytes, std::size_t n) {
   return s;
 }
 
+// What one thread needs to read chunks: its own stream, zstd context and buffers.
+struct ChunkSource {
+  std::ifstream in;
+  ZSTD_DCtx* dctx = nullptr;
+  std::vector<std::uint8_t> stored;
+  std::vector<std::uint8_t> raw;
+
+  explicit ChunkSource(std::ifstream stream) : in(std::move(stream)), dctx(ZSTD_createDCtx()) {}
+  ChunkSource(const ChunkSource&) = delete;
+  ChunkSource& operator=(const ChunkSource&) = delete;
+  ~ChunkSource() { ZSTD_freeDCtx(dctx); }
+};
+
+// The immutable part of an open trace that loading a chunk needs (shared by both threads).
+struct TraceLayout {
+  const std::string& path;
+  const std::vector<ChunkInfo>& chunks;
+  std::uint64_t index_offset;
+};
+
+// Reads, checks and decodes chunk i into `out`; throws the chunk's InputError.
+void load_chunk(const TraceLayout& file, ChunkSource& src, std::size_t i, DecodedChunk& out) {
+  const std::string& path = file.path;
+  const ChunkInfo& info = file.chunks[i];
+  const std::string where = "chunk " + std::to_string(i) + ": ";
+  std::uint8_t h[kChunkHeaderBytes];
+  src.in.clear();
+  src.in.seekg(static_cast<std::streamoff>(info.offset));
+  src.in.read(reinterpret_cast<char*>(h), kChunkHeaderBytes);
+  if (load<std::uint32_t>(h) != kChunkTag) throw_at_byte(path, info.offset, where + "bad chunk tag, expected 'CHNK'");
+  const std::uint8_t kind = h[4];
+  const std::uint8_t flags = h[5];
+  const std::uint32_t records = load<std::uint32_t>(h + 8);
+  const std::uint32_t stored = load<std::uint32_t>(h + 12);
+  const std::uint32_t raw_bytes = load<std::uint32_t>(h + 16);
+  const std::uint64_t first = load<std::uint64_t>(h + 20);
+  const std::uint32_t crc = load<std::uint32_t>(h + 28);
+  const std::uint64_t next = i + 1 < file.chunks.size() ? file.chunks[i + 1].offset : file.index_offset;
+  if (info.offset + kChunkHeaderBytes + stored > next)
+    throw_at_byte(path, info.offset, where + "payload of " + std::to_string(stored) + " bytes overruns the next chunk");
+  src.stored.resize(stored);
+  src.in.read(reinterpret_cast<char*>(src.stored.data()), stored);
+  if (!src.in) throw_at_byte(path, info.offset, where + "read failed");
+  const std::uint32_t computed = crc32c(src.stored.data(), stored, crc32c(h, 28));
+  if (computed != crc)
+    throw_at_byte(path, info.offset, where + "checksum mismatch (stored " + hex(crc) + ", computed " + hex(computed) + ")");
+  if (kind != static_cast<std::uint8_t>(info.kind) || records != info.records || first != info.first_record)
+    throw_at_byte(path, info.offset, where + "header disagrees with the chunk index");
+  // Every encoding uses at most 8 bytes per field: a larger claim is corruption, not a big chunk.
+  if (raw_bytes > std::uint64_t{records} * 64 + 4096) throw_at_byte(path, info.offset, where + "implausible decoded size");
+  src.raw.resize(raw_bytes);
+  const std::size_t got = ZSTD_decompressDCtx(src.dctx, src.raw.data(), src.raw.size(), src.stored.data(), stored);
+  if (ZSTD_isError(got) || got != raw_bytes)
+    throw_at_byte(path, info.offset, where + "zstd payload does not decode to " + std::to_string(raw_bytes) + " bytes");
+  out.kind = info.kind;
+  out.flags = flags;
+  out.first_record = first;
+  std::string error;
+  // Only the decoded kind's vector is resized (no clearing: that would zero-fill it again).
+  switch (info.kind) {
+    case RecordKind::Vertex: error = decode_vertex_records(src.raw, records, out.draw, out.vertices); break;
+    case RecordKind::Texel: error = decode_texel_records(src.raw, records, out.texels); break;
+    default: error = decode_address_records(src.raw, records, out.addresses); break;
+  }
+  if (!error.empty()) throw_at_byte(path, info.offset, where + error);
+}
+
+constexpr std::size_t kNone = ~std::size_t{0};
+
+// A decoded chunk and who owns it. Free: nobody. Busy: the thread decoding into it (the
+// caller's or the read-ahead thread). Ready: decoded (or failed), waiting to be asked for.
+// Held: returned by read_chunk() until the next call.
+struct Slot {
+  enum class State { Free, Busy, Ready, Held };
+  State state = State::Free;
+  std::size_t chunk = kNone;
+  bool drop = false;  // busy on a chunk nobody expects any more: free it when done
+  DecodedChunk decoded;
+  std::exception_ptr error;
+};
+
 }  // namespace
+
+// Every field below `mutex` is guarded by it, except a Busy slot's `decoded`, which belongs to
+// the thread decoding into it until it marks the slot Ready under the lock.
+struct TraceReader::ReadState {
+  ChunkSource caller;                     // the caller's thread
+  std::unique_ptr<ChunkSource> ahead;     // the read-ahead thread
+  std::array<Slot, 3> slots;              // one held by the caller, one per decoding thread
+  std::size_t held = kNone;
+  bool enabled = std::thread::hardware_concurrency() >= 2;
+  bool broken = false;                    // the thread could not start: read in the caller only
+  bool wanted[4] = {false, true, true, true};
+  std::size_t last = kNone;               // the chunk read last
+  std::size_t cursor = kNone;             // the next chunk to read ahead, kNone: none
+  bool stop = false;
+  std::mutex mutex;
+  std::condition_variable work;           // to the read-ahead thread: a slot or a chunk to read
+  std::condition_variable done;           // to the caller: a slot became Ready
+  std::thread thread;
+
+  explicit ReadState(std::ifstream in) : caller(std::move(in)) {}
+  ~ReadState() {
+    if (!thread.joinable()) return;
+    {
+      std::lock_guard lock(mutex);
+      stop = true;
+    }
+    work.notify_all();
+    thread.join();
+  }
+
+  Slot* find(std::size_t chunk) {
+    for (Slot& s : slots)
+      if (s.chunk == chunk && (s.state == Slot::State::Busy || s.state == Slot::State::Ready)) return &s;
+    return nullptr;
+  }
+  Slot* free_slot() {
+    for (Slot& s : slots)
+      if (s.state == Slot::State::Free) return &s;
+    return nullptr;
+  }
+  // The first chunk after `from` (kNone: from the start) of a wanted kind.
+  std::size_t next_wanted(const std::vector<ChunkInfo>& chunks, std::size_t from) const {
+    for (std::size_t i = from == kNone ? 0 : from + 1; i < chunks.size(); ++i)
+      if (wanted[static_cast<int>(chunks[i].kind)]) return i;
+    return kNone;
+  }
+  // The first wanted chunk after `from` that is not already read or being read.
+  std::size_t next_to_read_ahead(const std::vector<ChunkInfo>& chunks, std::size_t from) {
+    std::size_t i = next_wanted(chunks, from);
+    while (i != kNone && find(i)) i = next_wanted(chunks, i);
+    return i;
+  }
+  // Frees what was read ahead (a read out of order: the caller went elsewhere).
+  void drop_read_ahead() {
+    cursor = kNone;
+    for (Slot& s : slots) {
+      if (s.state == Slot::State::Ready) s.state = Slot::State::Free;
+      if (s.state == Slot::State::Busy) s.drop = true;
+    }
+  }
+  // Decodes chunk `slot->chunk` into the Busy slot, without the lock; then marks it Ready.
+  void decode(const TraceLayout& file, ChunkSource& src, Slot* slot, std::unique_lock<std::mutex>& lock) {
+    const std::size_t chunk = slot->chunk;
+    lock.unlock();
+    std::exception_ptr error;
+    try {
+      load_chunk(file, src, chunk, slot->decoded);
+    } catch (...) {
+      error = std::current_exception();
+    }
+    lock.lock();
+    slot->error = error;
+    slot->state = slot->drop ? Slot::State::Free : Slot::State::Ready;
+    slot->drop = false;
+  }
+  void run(const TraceLayout& file) {
+    std::unique_lock lock(mutex);
+    for (;;) {
+      Slot* slot = nullptr;
+      work.wait(lock, [&] { return stop || (cursor != kNone && (slot = free_slot()) != nullptr); });
+      if (stop) return;
+      slot->state = Slot::State::Busy;
+      slot->chunk = cursor;
+      cursor = next_to_read_ahead(file.chunks, cursor);
+      decode(file, *ahead, slot, lock);
+      done.notify_all();
+    }
+  }
+};
 
 bool TraceReader::is_trace_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -45,7 +221,8 @@ bool TraceReader::is_trace_file(const std::string& path) {
   return in.gcount() == 8 && std::memcmp(magic, kTraceMagic, 8) == 0;
 }
 
-TraceReader::TraceReader(const std::string& path) : path_(path), in_(path, std::ios::binary) {
+TraceReader::TraceReader(const std::string& path) : path_(path) {
+  std::ifstream in_(path, std::ios::binary);
   if (!in_) throw_in_file(path, "cannot open for reading");
   in_.seekg(0, std::ios::end);
   file_bytes_ = static_cast<std::uint64_t>(in_.tellg());
@@ -79,11 +256,11 @@ TraceReader::TraceReader(const std::string& path) : path_(path), in_(path, std::
   metadata_ = metadata_from_json(json, path);
 
   // Footer and index.
-  if (file_bytes_ < header_end + kFooterBytes) fail_truncated(header_end);
+  if (file_bytes_ < header_end + kFooterBytes) fail_truncated(in_, header_end);
   std::uint8_t footer[kFooterBytes];
   in_.seekg(static_cast<std::streamoff>(file_bytes_ - kFooterBytes));
   in_.read(reinterpret_cast<char*>(footer), kFooterBytes);
-  if (std::memcmp(footer + 16, kTraceEndMagic, 8) != 0) fail_truncated(header_end);
+  if (std::memcmp(footer + 16, kTraceEndMagic, 8) != 0) fail_truncated(in_, header_end);
   index_offset_ = load<std::uint64_t>(footer);
   const std::uint32_t index_crc = load<std::uint32_t>(footer + 8);
   if (index_offset_ < header_end || index_offset_ + 16 > file_bytes_ - kFooterBytes)
@@ -117,12 +294,12 @@ TraceReader::TraceReader(const std::string& path) : path_(path), in_(path, std::
     previous_end = c.offset + kChunkHeaderBytes;
     chunks_.push_back(c);
   }
-  dctx_ = ZSTD_createDCtx();
+  state_ = std::make_unique<ReadState>(std::move(in_));
 }
 
-TraceReader::~TraceReader() { ZSTD_freeDCtx(static_cast<ZSTD_DCtx*>(dctx_)); }
+TraceReader::~TraceReader() = default;
 
-void TraceReader::fail_truncated(std::uint64_t header_end) {
+void TraceReader::fail_truncated(std::ifstream& in_, std::uint64_t header_end) {
   // Walk the chunks from the start to say where the file stops.
   std::uint64_t offset = header_end;
   std::size_t chunk = 0;
@@ -144,53 +321,96 @@ void TraceReader::fail_truncated(std::uint64_t header_end) {
                                    std::to_string(chunk) + " (the writer did not finish)");
 }
 
+void TraceReader::set_read_ahead(bool enabled) {
+  std::lock_guard lock(state_->mutex);
+  state_->enabled = enabled;
+  if (!enabled) state_->drop_read_ahead();
+}
+
+void TraceReader::set_read_ahead_kinds(ReplayKinds kinds) {
+  std::lock_guard lock(state_->mutex);
+  ReadState& s = *state_;
+  s.wanted[static_cast<int>(RecordKind::Vertex)] = kinds.vertices;
+  s.wanted[static_cast<int>(RecordKind::Texel)] = kinds.texels;
+  s.wanted[static_cast<int>(RecordKind::Address)] = kinds.addresses;
+  s.drop_read_ahead();
+}
+
 const DecodedChunk& TraceReader::read_chunk(std::size_t i) {
-  const ChunkInfo& info = chunks_.at(i);
-  const std::string where = "chunk " + std::to_string(i) + ": ";
-  std::uint8_t h[kChunkHeaderBytes];
-  in_.clear();
-  in_.seekg(static_cast<std::streamoff>(info.offset));
-  in_.read(reinterpret_cast<char*>(h), kChunkHeaderBytes);
-  if (load<std::uint32_t>(h) != kChunkTag) throw_at_byte(path_, info.offset, where + "bad chunk tag, expected 'CHNK'");
-  const std::uint8_t kind = h[4];
-  const std::uint8_t flags = h[5];
-  const std::uint32_t records = load<std::uint32_t>(h + 8);
-  const std::uint32_t stored = load<std::uint32_t>(h + 12);
-  const std::uint32_t raw_bytes = load<std::uint32_t>(h + 16);
-  const std::uint64_t first = load<std::uint64_t>(h + 20);
-  const std::uint32_t crc = load<std::uint32_t>(h + 28);
-  const std::uint64_t next = i + 1 < chunks_.size() ? chunks_[i + 1].offset : index_offset_;
-  if (info.offset + kChunkHeaderBytes + stored > next)
-    throw_at_byte(path_, info.offset, where + "payload of " + std::to_string(stored) + " bytes overruns the next chunk");
-  stored_.resize(stored);
-  in_.read(reinterpret_cast<char*>(stored_.data()), stored);
-  if (!in_) throw_at_byte(path_, info.offset, where + "read failed");
-  const std::uint32_t computed = crc32c(stored_.data(), stored, crc32c(h, 28));
-  if (computed != crc)
-    throw_at_byte(path_, info.offset, where + "checksum mismatch (stored " + hex(crc) + ", computed " + hex(computed) + ")");
-  if (kind != static_cast<std::uint8_t>(info.kind) || records != info.records || first != info.first_record)
-    throw_at_byte(path_, info.offset, where + "header disagrees with the chunk index");
-  // Every encoding uses at most 8 bytes per field: a larger claim is corruption, not a big chunk.
-  if (raw_bytes > std::uint64_t{records} * 64 + 4096) throw_at_byte(path_, info.offset, where + "implausible decoded size");
-  raw_.resize(raw_bytes);
-  const std::size_t got = ZSTD_decompressDCtx(static_cast<ZSTD_DCtx*>(dctx_), raw_.data(), raw_.size(), stored_.data(), stored);
-  if (ZSTD_isError(got) || got != raw_bytes)
-    throw_at_byte(path_, info.offset, where + "zstd payload does not decode to " + std::to_string(raw_bytes) + " bytes");
-  chunk_.kind = info.kind;
-  chunk_.flags = flags;
-  chunk_.first_record = first;
-  std::string error;
-  // Only the decoded kind's vector is resized (no clearing: that would zero-fill it again).
-  switch (info.kind) {
-    case RecordKind::Vertex: error = decode_vertex_records(raw_, records, chunk_.draw, chunk_.vertices); break;
-    case RecordKind::Texel: error = decode_texel_records(raw_, records, chunk_.texels); break;
-    default: error = decode_address_records(raw_, records, chunk_.addresses); break;
+  if (i >= chunks_.size())
+    throw std::out_of_range("TraceReader::read_chunk: chunk " + std::to_string(i) + " of " + std::to_string(chunks_.size()));
+  const TraceLayout file{path_, chunks_, index_offset_};
+  ReadState& s = *state_;
+  std::unique_lock lock(s.mutex);
+  if (s.held != kNone) {
+    s.slots[s.held].state = Slot::State::Free;
+    s.held = kNone;
+    s.work.notify_one();
   }
-  if (!error.empty()) throw_at_byte(path_, info.offset, where + error);
-  return chunk_;
+  Slot* slot = nullptr;
+  for (;;) {
+    slot = s.find(i);
+    if (slot && slot->state == Slot::State::Ready) break;
+    if (slot) {
+      // Being read ahead. Rather than wait, decode the chunk after it (two threads, two chunks).
+      slot->drop = false;
+      Slot* spare = s.cursor != kNone ? s.free_slot() : nullptr;
+      if (!spare) {
+        s.done.wait(lock);
+        continue;
+      }
+      spare->state = Slot::State::Busy;
+      spare->chunk = s.cursor;
+      s.cursor = s.next_to_read_ahead(chunks_, s.cursor);
+      s.decode(file, s.caller, spare, lock);
+      continue;
+    }
+    // Not read ahead: read it here, in a free slot (one exists: the read-ahead thread holds at
+    // most one Busy slot, the caller's previous chunk was freed above) or over a Ready one.
+    if (s.cursor == i) s.cursor = s.next_to_read_ahead(chunks_, i);
+    slot = s.free_slot();
+    for (Slot& r : s.slots)
+      if (!slot && r.state == Slot::State::Ready) slot = &r;
+    slot->state = Slot::State::Busy;
+    slot->chunk = i;
+    s.decode(file, s.caller, slot, lock);
+  }
+
+  // Read ahead when the caller reads in order; drop the read-ahead when it jumps.
+  const bool in_order = i == s.next_wanted(chunks_, s.last);
+  s.last = i;
+  if (in_order && s.enabled && !s.broken) {
+    s.cursor = s.next_to_read_ahead(chunks_, i);
+    if (s.cursor != kNone && !s.thread.joinable()) {
+      try {
+        std::ifstream in(path_, std::ios::binary);
+        if (!in) throw std::runtime_error("cannot reopen");
+        s.ahead = std::make_unique<ChunkSource>(std::move(in));
+        s.thread = std::thread([&s, file] { s.run(file); });
+      } catch (const std::exception&) {
+        s.broken = true;  // no second stream or thread: everything is read by the caller
+        s.cursor = kNone;
+      }
+    }
+    s.work.notify_one();
+  } else {
+    s.drop_read_ahead();
+  }
+
+  slot->state = Slot::State::Held;
+  s.held = static_cast<std::size_t>(slot - s.slots.data());
+  if (slot->error) {
+    const std::exception_ptr error = slot->error;
+    slot->error = nullptr;
+    slot->state = Slot::State::Free;
+    s.held = kNone;
+    std::rethrow_exception(error);
+  }
+  return slot->decoded;
 }
 
 void replay_trace(TraceReader& reader, EventSink& sink, ReplayKinds kinds, Progress* progress) {
+  reader.set_read_ahead_kinds(kinds);
   for (std::size_t i = 0; i < reader.chunks().size(); ++i) {
     const ChunkInfo& info = reader.chunks()[i];
     const bool wanted = (info.kind == RecordKind::Vertex && kinds.vertices) ||

@@ -11,7 +11,8 @@
 #pragma once
 
 #include <cstdint>
-#include <fstream>
+#include <iosfwd>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -24,6 +25,13 @@
 namespace rastrace {
 
 class Progress;
+
+// Which record kinds replay_trace() delivers (and a TraceReader reads ahead).
+struct ReplayKinds {
+  bool vertices = true;
+  bool texels = true;
+  bool addresses = true;
+};
 
 // Only the vector of the chunk's kind holds this chunk's records; the others are stale.
 struct DecodedChunk {
@@ -48,33 +56,34 @@ class TraceReader {
   std::uint64_t records(RecordKind kind) const { return counts_[static_cast<int>(kind)]; }
   std::uint64_t file_bytes() const { return file_bytes_; }
 
-  // Reads, checks and decodes chunk i. The result stays valid until the next call.
+  // Reads, checks and decodes chunk i. The result stays valid until the next call. Any order
+  // works and gives the same records; a chunk's error is thrown by the call for that chunk.
   const DecodedChunk& read_chunk(std::size_t i);
+
+  // Read-ahead. Once chunks are read in file order (chunk i, then the next chunk of the kinds
+  // below), a second thread with its own stream and zstd context reads, checks and decodes the
+  // following chunks while the caller works on chunk i, and a caller that would wait for it
+  // decodes the chunk after instead. At most 3 decoded chunks are in memory. A read out of order
+  // drops what was read ahead. On by default when the machine has 2 or more hardware threads.
+  void set_read_ahead(bool enabled);
+  // The kinds the caller will read (default: all); chunks of other kinds are not read ahead and
+  // skipping them still counts as reading in order.
+  void set_read_ahead_kinds(ReplayKinds kinds);
 
   // True when `path` starts with the trace magic (to tell traces from CSV or din files).
   static bool is_trace_file(const std::string& path);
 
  private:
-  [[noreturn]] void fail_truncated(std::uint64_t header_end);
+  struct ReadState;  // decoding buffers, read-ahead slots and thread (trace_reader.cpp)
+  [[noreturn]] void fail_truncated(std::ifstream& in, std::uint64_t header_end);
 
   std::string path_;
-  std::ifstream in_;
   std::uint64_t file_bytes_ = 0;
   std::uint64_t index_offset_ = 0;
   TraceMetadata metadata_;
   std::vector<ChunkInfo> chunks_;
   std::uint64_t counts_[4] = {0, 0, 0, 0};
-  DecodedChunk chunk_;
-  std::vector<std::uint8_t> stored_;
-  std::vector<std::uint8_t> raw_;
-  void* dctx_ = nullptr;
-};
-
-// Which record kinds replay_trace() delivers.
-struct ReplayKinds {
-  bool vertices = true;
-  bool texels = true;
-  bool addresses = true;
+  std::unique_ptr<ReadState> state_;
 };
 
 // Feeds every chunk of the file into the sink, in file order, then calls sink.finish().
@@ -90,11 +99,12 @@ struct VertexBatch {
 
 class VertexTraceReader {
  public:
-  explicit VertexTraceReader(const std::string& path) : reader_(path) {}
+  explicit VertexTraceReader(const std::string& path) : reader_(path) { reader_.set_read_ahead_kinds({true, false, false}); }
   const TraceMetadata& metadata() const { return reader_.metadata(); }
   std::uint64_t records() const { return reader_.records(RecordKind::Vertex); }
   // The next batch (one chunk); false at the end of the file.
   bool next(VertexBatch& batch);
+  void set_read_ahead(bool enabled) { reader_.set_read_ahead(enabled); }
 
  private:
   TraceReader reader_;
@@ -103,10 +113,11 @@ class VertexTraceReader {
 
 class TexelTraceReader {
  public:
-  explicit TexelTraceReader(const std::string& path) : reader_(path) {}
+  explicit TexelTraceReader(const std::string& path) : reader_(path) { reader_.set_read_ahead_kinds({false, true, false}); }
   const TraceMetadata& metadata() const { return reader_.metadata(); }
   std::uint64_t records() const { return reader_.records(RecordKind::Texel); }
   bool next(std::span<const TexelAccess>& batch);
+  void set_read_ahead(bool enabled) { reader_.set_read_ahead(enabled); }
 
  private:
   TraceReader reader_;
