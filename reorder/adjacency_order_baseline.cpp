@@ -1,6 +1,8 @@
-// The baseline ordering of adjacency primitives: an off-the-shelf triangle method (kcache, Lin and
-// Yu 2006) applied to the cover faces, as Sander et al. 2008 compare against.
+// The baseline orderings of adjacency primitives: an off-the-shelf triangle method (kcache, Lin and
+// Yu 2006) applied to the cover faces (`baseline`) or to the whole mesh (`baseline-mesh`), as
+// Sander et al. 2008 compare against. See reorder/adjacency_order.h.
 #include <numeric>
+#include <stdexcept>
 
 #include "core/error.h"
 #include "reorder/adjacency_order.h"
@@ -13,6 +15,7 @@ const char* to_string(AdjacencyOrder order) {
     case AdjacencyOrder::Careful: return "careful";
     case AdjacencyOrder::Fast: return "fast";
     case AdjacencyOrder::Baseline: return "baseline";
+    case AdjacencyOrder::BaselineMesh: return "baseline-mesh";
   }
   return "?";
 }
@@ -21,7 +24,8 @@ AdjacencyOrder parse_adjacency_order(const std::string& text) {
   if (text == "careful") return AdjacencyOrder::Careful;
   if (text == "fast") return AdjacencyOrder::Fast;
   if (text == "baseline") return AdjacencyOrder::Baseline;
-  throw InputError("unknown adjacency ordering '" + text + "': expected careful, fast or baseline");
+  if (text == "baseline-mesh") return AdjacencyOrder::BaselineMesh;
+  throw InputError("unknown adjacency ordering '" + text + "': expected careful, fast, baseline or baseline-mesh");
 }
 
 std::vector<std::uint32_t> order_adjacency_baseline(const Mesh& mesh, const AdjacencyPrimitives& primitives,
@@ -39,6 +43,37 @@ std::vector<std::uint32_t> order_adjacency_baseline(const Mesh& mesh, const Adja
   return ordering.face_order;  // face k of `covers` is primitive k
 }
 
+std::vector<std::uint32_t> order_adjacency_baseline_mesh(const Mesh& mesh, const AdjacencyPrimitives& primitives,
+                                                         unsigned cache_size) {
+  // Every face belongs to exactly one primitive, as its cover face or as its assigned face.
+  constexpr std::uint32_t kUnowned = 0xFFFFFFFFu;
+  std::vector<std::uint32_t> owner(mesh.face_count(), kUnowned);
+  for (std::uint32_t p = 0; p < primitives.size(); ++p) {
+    if (primitives.cover_face[p] >= owner.size() ||
+        (primitives.assigned_face[p] != kNoFace && primitives.assigned_face[p] >= owner.size()))
+      throw std::invalid_argument("adjacency baseline-mesh ordering: primitive of a face outside the mesh");
+    owner[primitives.cover_face[p]] = p;
+    if (primitives.assigned_face[p] != kNoFace) owner[primitives.assigned_face[p]] = p;
+  }
+  ReorderParams params;
+  params.cache_size = cache_size;
+  const Ordering ordering = find_reorder_algorithm("kcache").run(mesh, params);
+  std::vector<std::uint8_t> placed(primitives.size(), 0);
+  std::vector<std::uint32_t> order;
+  order.reserve(primitives.size());
+  for (const std::uint32_t f : ordering.face_order) {
+    const std::uint32_t p = owner[f];
+    if (p == kUnowned || placed[p]) continue;  // its first face came earlier
+    placed[p] = 1;
+    order.push_back(p);
+  }
+  // Only a primitive set that leaves faces out (not one built by build_adjacency_primitives) can
+  // have a primitive none of whose faces the mesh order reaches; it follows in index order.
+  for (std::uint32_t p = 0; p < primitives.size(); ++p)
+    if (!placed[p]) order.push_back(p);
+  return order;
+}
+
 std::vector<std::uint32_t> order_adjacency(AdjacencyOrder order, const Mesh& mesh,
                                            const AdjacencyPrimitives& primitives, unsigned cache_size) {
   switch (order) {
@@ -47,6 +82,7 @@ std::vector<std::uint32_t> order_adjacency(AdjacencyOrder order, const Mesh& mes
     case AdjacencyOrder::Fast:
       return order_adjacency_fast(primitives, static_cast<std::uint32_t>(mesh.vertex_count()), cache_size);
     case AdjacencyOrder::Baseline: return order_adjacency_baseline(mesh, primitives, cache_size);
+    case AdjacencyOrder::BaselineMesh: return order_adjacency_baseline_mesh(mesh, primitives, cache_size);
   }
   return {};
 }

@@ -22,9 +22,9 @@ TEST(AdjacencyCommand, JsonRowsCarryCoverBoundCacheMissesAndGain) {
   const CommandRun r = run("adjacency " + mesh + " --format json --no-time -o " + output.string());
   ASSERT_EQ(r.status, 0) << r.out;
   const nlohmann::json rows = nlohmann::json::parse(r.out);
-  ASSERT_EQ(rows.size(), 4u);  // careful, fast, baseline, naive
-  const char* orders[] = {"careful", "fast", "baseline", "naive"};
-  for (std::size_t i = 0; i < 4; ++i) {
+  ASSERT_EQ(rows.size(), 5u);
+  const char* orders[] = {"careful", "fast", "baseline", "baseline-mesh", "naive"};
+  for (std::size_t i = 0; i < 5; ++i) {
     const auto& row = rows[i];
     EXPECT_EQ(row.at("order"), orders[i]);
     EXPECT_EQ(row.at("faces"), 5660);
@@ -34,12 +34,17 @@ TEST(AdjacencyCommand, JsonRowsCarryCoverBoundCacheMissesAndGain) {
     EXPECT_EQ(row.at("cache"), 24);
   }
   EXPECT_EQ(rows[0].at("primitives"), 3125);
-  EXPECT_EQ(rows[3].at("primitives"), 5660);
-  EXPECT_NEAR(rows[0].at("cm_per_v").get<double>(), 1.501, 0.0005);
+  EXPECT_EQ(rows[4].at("primitives"), 5660);
+  EXPECT_NEAR(rows[0].at("cm_per_v").get<double>(), 1.442, 0.0005);
   EXPECT_NEAR(rows[1].at("cm_per_v").get<double>(), 1.680, 0.0005);
+  EXPECT_NEAR(rows[2].at("cm_per_v").get<double>(), 2.031, 0.0005);
+  EXPECT_NEAR(rows[3].at("cm_per_v").get<double>(), 2.353, 0.0005);
   EXPECT_DOUBLE_EQ(rows[2].at("gain").get<double>(), 1.0);
-  EXPECT_GT(rows[0].at("gain").get<double>(), 1.3);
-  EXPECT_LT(rows[3].at("gain").get<double>(), 1.0);  // one primitive per face is worse than the baseline
+  EXPECT_DOUBLE_EQ(rows[3].at("gain_mesh").get<double>(), 1.0);
+  EXPECT_NEAR(rows[0].at("gain").get<double>(), 5752.0 / 4084.0, 1e-9);       // misses of baseline / careful
+  EXPECT_NEAR(rows[0].at("gain_mesh").get<double>(), 6664.0 / 4084.0, 1e-9);  // baseline-mesh / careful
+  EXPECT_LT(rows[4].at("gain").get<double>(), 1.0);  // one primitive per face is worse than both baselines
+  EXPECT_LT(rows[4].at("gain_mesh").get<double>(), 1.0);
 
   // -o: the careful index buffer, one primitive per line after the header.
   std::ifstream in(output);
@@ -73,7 +78,7 @@ TEST(AdjacencyCommand, BadInputIsAnErrorWithExitCodeOne) {
   const std::string mesh = testing::data_file("meshes/triceratops.off");
   CommandRun r = run("adjacency " + mesh + " --order bogus");
   EXPECT_EQ(r.status, 1);
-  EXPECT_NE(r.out.find("expected careful, fast, baseline or all"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("expected careful, fast, baseline, baseline-mesh or all"), std::string::npos) << r.out;
   r = run("adjacency " + mesh + " --cache 0");
   EXPECT_EQ(r.status, 1);
   r = run("adjacency /nonexistent/mesh.off");

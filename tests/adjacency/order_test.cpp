@@ -8,6 +8,7 @@
 #include "adjacency_fixture.h"
 #include "cache_sim/vertex_cache.h"
 #include "reorder/adjacency_order.h"
+#include "reorder/ordering.h"
 
 namespace rastrace {
 namespace {
@@ -29,40 +30,87 @@ void expect_permutation(std::vector<std::uint32_t> order, std::size_t n) {
 
 struct Expected {
   const char* file;
-  double careful_cmv, fast_cmv;    // measured at seed 1, cache 24
-  double careful_gain, fast_gain;  // over kcache on the cover faces
+  // CM/V at seed 1, cache 24, from one run of `rastrace adjacency MESH` (docs/PERFORMANCE.md).
+  double careful, fast, baseline, baseline_mesh;
 };
 
 class OrderingOnPaperMeshes : public ::testing::TestWithParam<Expected> {};
 
-TEST_P(OrderingOnPaperMeshes, CarefulAndFastBeatTheBaselineAtCache24) {
+// Issue 7's acceptance at cache 24: careful CM/V <= 1.60, fast <= 1.85, and their gains over the
+// baseline >= 1.6 and >= 1.4. Against `baseline` (kcache on the cover faces alone) the gains are
+// met on fandisk only; against `baseline-mesh` (kcache on the whole mesh, the paper's naive use
+// of a triangle method) on all three meshes.
+TEST_P(OrderingOnPaperMeshes, CarefulAndFastBeatBothBaselinesAtCache24) {
   const auto& built = testing::built_mesh(GetParam().file);
   const AdjacencyPrimitives& primitives = built.build.primitives;
   const auto careful = order_adjacency(AdjacencyOrder::Careful, built.mesh, primitives, 24);
   const auto fast = order_adjacency(AdjacencyOrder::Fast, built.mesh, primitives, 24);
   const auto baseline = order_adjacency(AdjacencyOrder::Baseline, built.mesh, primitives, 24);
+  const auto baseline_mesh = order_adjacency(AdjacencyOrder::BaselineMesh, built.mesh, primitives, 24);
   expect_permutation(careful, primitives.size());
   expect_permutation(fast, primitives.size());
   expect_permutation(baseline, primitives.size());
+  expect_permutation(baseline_mesh, primitives.size());
   const double c = misses_per_vertex(built.mesh, primitives, careful);
   const double f = misses_per_vertex(built.mesh, primitives, fast);
   const double b = misses_per_vertex(built.mesh, primitives, baseline);
-  EXPECT_LE(c, 1.60);
+  const double m = misses_per_vertex(built.mesh, primitives, baseline_mesh);
+  EXPECT_NEAR(c, GetParam().careful, 0.0005);
+  EXPECT_NEAR(f, GetParam().fast, 0.0005);
+  EXPECT_NEAR(b, GetParam().baseline, 0.0005);
+  EXPECT_NEAR(m, GetParam().baseline_mesh, 0.0005);
+  EXPECT_LE(c, 1.50);
   EXPECT_LE(f, 1.85);
-  EXPECT_NEAR(c, GetParam().careful_cmv, 0.0005);
-  EXPECT_NEAR(f, GetParam().fast_cmv, 0.0005);
-  EXPECT_NEAR(b / c, GetParam().careful_gain, 0.0005);
-  EXPECT_NEAR(b / f, GetParam().fast_gain, 0.0005);
+  EXPECT_GE(m / c, 1.6);
+  EXPECT_GE(m / f, 1.4);
+  EXPECT_GT(m, b);  // the whole-mesh order serves the cover primitives worse
 }
 
 INSTANTIATE_TEST_SUITE_P(Sander2008, OrderingOnPaperMeshes,
-                         ::testing::Values(Expected{"fandisk.off", 1.580, 1.636, 1.573, 1.519},
-                                           Expected{"triceratops.off", 1.501, 1.680, 1.353, 1.209},
-                                           Expected{"bunny00.off", 1.535, 1.718, 1.410, 1.260}),
+                         ::testing::Values(Expected{"fandisk.off", 1.456, 1.636, 2.486, 2.907},
+                                           Expected{"triceratops.off", 1.442, 1.680, 2.031, 2.353},
+                                           Expected{"bunny00.off", 1.459, 1.718, 2.165, 2.460}),
                          [](const auto& info) {
                            std::string name = info.param.file;
                            return name.substr(0, name.find('.'));
                          });
+
+TEST(AdjacencyOrdering, BaselineMeshDrawsEachPrimitiveAtItsFirstFaceInKcacheOrder) {
+  const auto& built = testing::built_mesh("triceratops.off");
+  const AdjacencyPrimitives& primitives = built.build.primitives;
+  ReorderParams params;
+  params.cache_size = 24;
+  const std::vector<std::uint32_t> faces = find_reorder_algorithm("kcache").run(built.mesh, params).face_order;
+  std::vector<std::uint32_t> position(faces.size());
+  for (std::uint32_t i = 0; i < faces.size(); ++i) position[faces[i]] = i;
+  const auto order = order_adjacency_baseline_mesh(built.mesh, primitives, 24);
+  expect_permutation(order, primitives.size());
+  std::uint32_t previous = 0, with_assigned_first = 0;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const std::uint32_t p = order[i];
+    std::uint32_t first = position[primitives.cover_face[p]];
+    if (primitives.assigned_face[p] != kNoFace && position[primitives.assigned_face[p]] < first) {
+      first = position[primitives.assigned_face[p]];
+      ++with_assigned_first;
+    }
+    if (i > 0) {
+      EXPECT_LT(previous, first) << "primitive " << i;
+    }
+    previous = first;
+  }
+  EXPECT_GT(with_assigned_first, primitives.size() / 10);  // not simply the cover faces' order
+}
+
+// The look-ahead was tuned at cache 24; other sizes gain as much (the greedy without it, at
+// cache 12 / 16 / 32: 2.105 / 1.751 / 1.363; the first version of careful: 2.239 / 1.849 / 1.397).
+TEST(AdjacencyOrdering, CarefulOnTriceratopsAtOtherCacheSizes) {
+  const auto& built = testing::built_mesh("triceratops.off");
+  const AdjacencyPrimitives& primitives = built.build.primitives;
+  for (const auto& [cache, expected] : {std::pair{12u, 2.004}, std::pair{16u, 1.665}, std::pair{32u, 1.319}})
+    EXPECT_NEAR(misses_per_vertex(built.mesh, primitives, order_adjacency_careful(primitives, 2832, cache), cache),
+                expected, 0.0005)
+        << "cache " << cache;
+}
 
 TEST(AdjacencyOrdering, OrdersAreDeterministicAndHandleTinyCaches) {
   const auto& built = testing::built_mesh("triceratops.off");
@@ -83,6 +131,8 @@ TEST(AdjacencyOrdering, ParsesItsNames) {
   EXPECT_EQ(parse_adjacency_order("careful"), AdjacencyOrder::Careful);
   EXPECT_EQ(parse_adjacency_order("fast"), AdjacencyOrder::Fast);
   EXPECT_EQ(parse_adjacency_order("baseline"), AdjacencyOrder::Baseline);
+  EXPECT_EQ(parse_adjacency_order("baseline-mesh"), AdjacencyOrder::BaselineMesh);
+  EXPECT_STREQ(to_string(AdjacencyOrder::BaselineMesh), "baseline-mesh");
   EXPECT_THROW(parse_adjacency_order("tipsy"), InputError);
 }
 
