@@ -16,11 +16,20 @@ Result run(const std::string& arguments) { return rastrace::testing::run_rastrac
 TEST(VcacheCli, CastanoRowsAsCsv) {
   const Result r = run("vcache grid:16x16 --algo scanline,grid --cache 12,16,20 --format csv --no-time");
   ASSERT_EQ(r.status, 0) << r.out;
-  EXPECT_NE(r.out.find("algo,policy,cache,target,triangles,vertices,misses,acmr,atvr,indices_per_triangle,bandwidth\n"),
+  EXPECT_NE(r.out.find("algo,policy,cache,target,triangles,vertices,misses,acmr,atvr,indices_per_triangle,vertices_sent,bandwidth\n"),
             std::string::npos) << r.out;
   EXPECT_NE(r.out.find("scanline,fifo,16,16,512,289,544,"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("grid,fifo,20,20,512,289,289,"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("grid,fifo,16,16,512,289,306,"), std::string::npos) << r.out;
+}
+
+TEST(VcacheCli, StripPrintsVerticesSentOnTriceratops) {
+  // Yang et al., Table 1: 6,911 vertices sent by Evans et al.'s strips; ours send 6,820.
+  const Result r = run("vcache " + rastrace::testing::data_file("meshes/triceratops.off") +
+                       " --algo strip --cache 16 --format csv --no-time");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("strip,fifo,16,16,5660,2832,"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(",6820,"), std::string::npos) << r.out;
 }
 
 TEST(VcacheCli, TargetSetsTheCacheTheOrderIsMadeFor) {
