@@ -164,7 +164,7 @@ class CarefulOrder {
   // then the older vertex (nearer eviction).
   void gather(std::vector<Candidate>& candidates) {
     candidates.clear();
-    for (std::uint64_t t = time_ - std::min<std::uint64_t>(k_, time_); t < time_; ++t) {
+    for (std::uint64_t t = time_ - k_; t < time_; ++t) {
       const std::uint32_t v = fifo_[t % k_];
       if (v == kNone || stamp_[v] != t || live_[v] == 0) continue;
       candidates.push_back({v, live_[v], simulate(v, nullptr)});
@@ -186,7 +186,7 @@ class CarefulOrder {
     std::int64_t cheapest = 0;
     const std::size_t n = std::min(candidates.size(), kBreadth[level]);
     for (std::size_t j = 0; j < n; ++j) {
-      const Candidate candidate = candidates[j];  // the vector is reused by deeper levels
+      const Candidate candidate = candidates[j];
       Level& undo = levels_[level + 1];
       undo.sequence.clear();
       simulate(candidate.vertex, &undo.sequence);
@@ -243,10 +243,11 @@ class CarefulOrder {
   std::vector<std::uint32_t> fifo_;
   std::vector<std::uint8_t> emitted_;
   // simulate()'s overlay, valid where the mark equals the current epoch.
-  std::uint32_t epoch_ = 0;
-  std::vector<std::uint32_t> sim_mark_;
+  std::uint64_t epoch_ = 0;  // about 250 simulations per ring: 32 bits could wrap on large meshes
+  std::vector<std::uint64_t> sim_mark_;
   std::vector<std::uint64_t> sim_stamp_;
-  std::vector<std::uint32_t> live_mark_, sim_live_;
+  std::vector<std::uint64_t> live_mark_;
+  std::vector<std::uint32_t> sim_live_;
   std::vector<std::uint32_t> inserted_, ring_;
   Level levels_[kDepth + 1];
 };
