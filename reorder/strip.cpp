@@ -349,19 +349,21 @@ class StripCover {
     }
   }
 
-  // Swaps on the links touching the given faces (each link once).
+  // Swaps on the links touching the given faces (each link once: a link between two listed
+  // faces counts at the first).
   unsigned links_cost(std::initializer_list<std::uint32_t> faces) const {
-    std::array<std::uint64_t, 9> seen{};
-    unsigned n = 0, cost = 0;
-    for (const std::uint32_t f : faces)
+    unsigned cost = 0;
+    const std::uint32_t* list = faces.begin();
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+      const std::uint32_t f = list[i];
       for (unsigned s = 0; s < 3; ++s) {
         if (!(mask_[f] >> s & 1)) continue;
         const std::uint32_t g = topology_.neighbor(f, s);
-        const std::uint64_t key = std::uint64_t(std::min(f, g)) << 32 | std::max(f, g);
-        if (std::find(seen.begin(), seen.begin() + n, key) != seen.begin() + n) continue;
-        seen[n++] = key;
-        cost += fan(f, s);
+        bool counted = false;
+        for (std::size_t j = 0; j < i; ++j) counted |= list[j] == g;
+        if (!counted) cost += fan(f, s);
       }
+    }
     return cost;
   }
 
