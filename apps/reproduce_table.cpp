@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -49,7 +50,7 @@ Table reproduction_table(const ReproduceOptions& options) {
   table.title = "Published figures (REFERENCE.md) and rastrace's";
   table.parameters = {{"papers", options.papers},
                       {"local_iterations", static_cast<std::int64_t>(options.local_iterations)},
-                      {"difference", "ours - published; percent of published"}};
+                      {"difference", "ours rounded as printf rounds (3 decimals, ties to even), minus published; and in percent of published"}};
   table.columns = {{"paper", "paper", 0},       {"figure", "figure", 0},          {"paper_mesh", "paper's mesh", 0},
                    {"our_mesh", "our mesh", 0}, {"published", "published", 3},    {"ours", "ours", 3},
                    {"difference", "difference", 3}, {"difference_percent", "difference %", 1}, {"note", "note", 0}};
@@ -64,8 +65,9 @@ Table reproduction_table(const ReproduceOptions& options) {
             std::holds_alternative<std::int64_t>(figure.ours.value))
           difference = std::get<std::int64_t>(figure.ours.value) - std::get<std::int64_t>(figure.published.value);
         else
-          difference = number(figure.ours) - number(figure.published);
-        percent = 100.0 * (number(figure.ours) - number(figure.published)) / number(figure.published);
+          difference = std::nearbyint(number(figure.ours) * 1000.0) / 1000.0 - number(figure.published);
+        percent = 100.0 * (std::nearbyint(number(figure.ours) * 1000.0) / 1000.0 - number(figure.published)) /
+                  number(figure.published);
       }
       table.add_row({figure.paper, figure.figure, figure.paper_mesh, figure.our_mesh.empty() ? "-" : figure.our_mesh,
                      figure.published, figure.ours, difference, percent, figure.note});

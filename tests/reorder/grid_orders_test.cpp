@@ -102,6 +102,16 @@ TEST(GridOrders, OptimalForEightRunOnSixteenMatchesCastanosComment) {
   }
 }
 
+// The accounting is confirmed by a row it was not fitted to: his Morton order is the same curve
+// as ours, and under his accounting it gives his three figures exactly (strict FIFO 16: 0.766).
+TEST(GridOrders, MortonMatchesCastanoExactlyUnderHisAccounting) {
+  const Mesh grid = make_grid(16, 16);
+  EXPECT_EQ(charged_on_fifo("morton", grid, 20, 20), 368u);  // 0.719
+  EXPECT_EQ(charged_on_fifo("morton", grid, 16, 16), 384u);  // 0.750
+  EXPECT_EQ(charged_on_fifo("morton", grid, 12, 12), 416u);  // 0.8125, printed 0.812
+  EXPECT_EQ(run_on_fifo("morton", grid, 16, 16).misses, 392u);
+}
+
 TEST(GridOrders, CacheOfWidthPlusTwoTransformsEveryVertexOnce) {
   for (const int w : {4, 9, 16, 30}) {
     const Mesh grid = make_grid(w, w);
