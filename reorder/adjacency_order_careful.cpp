@@ -12,7 +12,7 @@ namespace {
 constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 // A resident vertex that a ring completes will never be reloaded; one about to leave the FIFO
 // would most likely have been, so the bonus grows with its age: kCompletionWeight * age / K
-// misses. Chosen on fandisk, triceratops and bunny00 at FIFO 12-32 (with 0, CM/V at cache 24 is
+// misses. Chosen at FIFO 24 on fandisk, triceratops and bunny00, checked at 12-32 (with 0, CM/V at 24 is
 // 1-2.4% higher). The misses are counted per ring, not per primitive: dividing by the ring's size
 // (as kcache does for triangles) made CM/V 6-9% higher. Costs are kept in units of 1/K miss so
 // that they are exact integers.
