@@ -1,4 +1,4 @@
-// `rastrace reproduce [--paper all|castano,hoppe,yang,sander,forsyth] [--local-iterations N]
+// `rastrace reproduce [--paper all|castano,hoppe,yang,yang-texture,sander,forsyth] [--local-iterations N]
 //  [--format md|csv|latex|json] [-o FILE]`: every published figure of REFERENCE.md beside ours,
 // measured now, with the difference (apps/reproduce.h).
 #include <iostream>
@@ -30,7 +30,7 @@ void run_reproduce(const ReproduceCommand& command) {
 void add_reproduce_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("reproduce", "Published figures of the papers beside rastrace's own, with the difference");
   auto command = std::make_shared<ReproduceCommand>();
-  sub->add_option("--paper", command->options.papers, "all, or a comma-separated list of castano, hoppe, yang, sander, forsyth")
+  sub->add_option("--paper", command->options.papers, "all, or a comma-separated list of castano, hoppe, yang, yang-texture, sander, forsyth")
       ->capture_default_str();
   sub->add_option("--local-iterations", command->options.local_iterations,
                   "Perturbation searches of Hoppe's local optimization")

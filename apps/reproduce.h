@@ -32,6 +32,8 @@ struct ReproduceOptions {
 std::vector<ReproducedFigure> reproduce_castano();
 std::vector<ReproducedFigure> reproduce_hoppe(const ReproduceOptions& options);
 std::vector<ReproducedFigure> reproduce_yang();
+// Renders the bunny and the spider: a few seconds.
+std::vector<ReproducedFigure> reproduce_yang_texture();
 std::vector<ReproducedFigure> reproduce_sander2008();
 std::vector<ReproducedFigure> reproduce_forsyth();
 

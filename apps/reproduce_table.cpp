@@ -34,6 +34,7 @@ Table reproduction_table(const ReproduceOptions& options) {
       {"castano", [](const ReproduceOptions&) { return reproduce_castano(); }},
       {"hoppe", reproduce_hoppe},
       {"yang", [](const ReproduceOptions&) { return reproduce_yang(); }},
+      {"yang-texture", [](const ReproduceOptions&) { return reproduce_yang_texture(); }},
       {"sander", [](const ReproduceOptions&) { return reproduce_sander2008(); }},
       {"forsyth", [](const ReproduceOptions&) { return reproduce_forsyth(); }},
   };
@@ -42,7 +43,7 @@ Table reproduction_table(const ReproduceOptions& options) {
   for (std::string name; std::getline(list, name, ',');) {
     bool known = name == "all";
     for (const auto& [paper, run] : papers) known |= name == paper;
-    if (!known) throw InputError("--paper '" + name + "': expected all, castano, hoppe, yang, sander or forsyth");
+    if (!known) throw InputError("--paper '" + name + "': expected all, castano, hoppe, yang, yang-texture, sander or forsyth");
     wanted.push_back(name);
   }
 
