@@ -32,7 +32,8 @@ Ordering reorder_tipsy(const Mesh& mesh, const ReorderParams& params) {
   std::vector<std::uint32_t> stamp(vertex_count, 0);
   std::vector<std::uint8_t> emitted(face_count, 0);
   // The dead-end stack; the entries a fan pushes are also that fan's candidate list.
-  // Never read above its top, so left uninitialised (it is the largest array here).
+  // Never read above its top, so left uninitialised (it is the largest array here). Pushes are
+  // branch-free (written, then counted or not), hence the spare entry.
   const std::unique_ptr<std::uint32_t[]> dead_end = std::make_unique_for_overwrite<std::uint32_t[]>(3 * std::size_t(face_count) + 1);
   std::size_t dead_end_size = 0;
 
@@ -49,20 +50,38 @@ Ordering reorder_tipsy(const Mesh& mesh, const ReorderParams& params) {
   std::int64_t fan = vertex_count > 0 ? 0 : -1;
   while (fan >= 0) {
     const std::size_t fan_start = dead_end_size;
-    for (const std::uint32_t face : topology.faces_of_vertex(static_cast<std::uint32_t>(fan))) {
+    const auto fan_vertex = static_cast<std::uint32_t>(fan);
+    // live[fan_vertex] faces are left to emit: once they are, the rest of its list is emitted
+    // already and is not scanned.
+    std::uint32_t remaining = live[fan_vertex];
+    for (const std::uint32_t face : topology.faces_of_vertex(fan_vertex)) {
+      if (remaining == 0) break;
       if (emitted[face]) continue;
+      --remaining;
       emitted[face] = 1;
       *order_out++ = face;
       const std::uint32_t* corners = idx + 3 * std::size_t(face);
-      for (int i = 0; i < 3; ++i) {
-        const std::uint32_t v = corners[i];
-        *index_out++ = v;
-        // A degenerate face counts once per distinct vertex, as its adjacency lists it.
-        if ((i > 0 && corners[0] == v) || (i > 1 && corners[1] == v)) continue;
-        dead_end[dead_end_size++] = v;
-        --live[v];
-        if (time - stamp[v] > k) stamp[v] = time++;
-      }
+      const std::uint32_t a = corners[0], b = corners[1], c = corners[2];
+      index_out[0] = a;
+      index_out[1] = b;
+      index_out[2] = c;
+      index_out += 3;
+      // A degenerate face counts each distinct vertex once, as its adjacency lists it. The fan
+      // vertex is not pushed: it has no live triangle left once its fan is emitted, so neither
+      // the candidate scan nor the dead-end stack could ever pick it.
+      const std::uint32_t count_b = b != a, count_c = (c != a) & (c != b);
+      dead_end[dead_end_size] = a;
+      dead_end_size += a != fan_vertex;
+      dead_end[dead_end_size] = b;
+      dead_end_size += count_b & (b != fan_vertex);
+      dead_end[dead_end_size] = c;
+      dead_end_size += count_c & (c != fan_vertex);
+      live[a] -= 1;
+      live[b] -= count_b;
+      live[c] -= count_c;
+      if (time - stamp[a] > k) stamp[a] = time++;
+      if (count_b && time - stamp[b] > k) stamp[b] = time++;
+      if (count_c && time - stamp[c] > k) stamp[c] = time++;
     }
 
     // Time-stamp rule over this fan's vertices.

@@ -7,11 +7,12 @@
 namespace rastrace {
 
 MeshTopology build_vertex_faces(const Mesh& mesh) {
-  const std::string name = mesh.name.empty() ? std::string("mesh") : mesh.name;
+  // Only an error needs the name (a copy would allocate on every call).
+  const auto name = [&] { return mesh.name.empty() ? std::string("mesh") : mesh.name; };
   if (mesh.indices.size() % 3 != 0)
-    throw_in_file(name, "index count " + std::to_string(mesh.indices.size()) + " is not a multiple of 3");
+    throw_in_file(name(), "index count " + std::to_string(mesh.indices.size()) + " is not a multiple of 3");
   if (mesh.vertex_count() >= kNoFace || mesh.face_count() >= kNoFace / 3)
-    throw_in_file(name, "mesh too large for 32-bit topology");
+    throw_in_file(name(), "mesh too large for 32-bit topology");
   MeshTopology t;
   t.vertex_count = static_cast<std::uint32_t>(mesh.vertex_count());
   t.face_count = static_cast<std::uint32_t>(mesh.face_count());
@@ -22,7 +23,7 @@ MeshTopology build_vertex_faces(const Mesh& mesh) {
     const std::uint32_t a = idx[3 * f], b = idx[3 * f + 1], c = idx[3 * f + 2];
     if (a >= V || b >= V || c >= V) {
       const std::uint32_t bad = a >= V ? a : b >= V ? b : c;
-      throw_in_file(name, "face " + std::to_string(f) + ": vertex index " + std::to_string(bad) +
+      throw_in_file(name(), "face " + std::to_string(f) + ": vertex index " + std::to_string(bad) +
                               " >= vertex count " + std::to_string(V));
     }
     ++t.vertex_face_offsets[a + 1];
