@@ -1,5 +1,6 @@
 #include "traces/chunk_codec.h"
 
+#include <algorithm>
 #include <cstring>
 
 namespace rastrace {
@@ -93,78 +94,152 @@ struct Cursor {
   }
 };
 
-template <int W, typename Set>
-void decode_deltas(const std::uint8_t* p, std::size_t n, std::uint64_t value, Set set) {
-  set(0, value);
-  for (std::size_t i = 1; i < n; ++i, p += W) {
-    std::uint64_t z = 0;
-    std::memcpy(&z, p, W);
-    value += unzigzag(z);
-    set(i, value);
+// One column being decoded: its header is parsed (and its bytes checked to be there) before any
+// record is decoded, so that the record loop below needs no bounds checks.
+struct Column {
+  const char* what = "";
+  std::uint64_t limit = 0;
+  std::uint8_t mode = 0;
+  std::uint64_t value = 0;  // the last decoded value
+  std::uint64_t all = 0;    // bitwise OR of every value: one range check per column
+  const std::uint8_t* deltas = nullptr;
+  const std::uint8_t* exceptions = nullptr;  // mode kEscapedBytes: the next escaped delta
+  const std::uint8_t* exceptions_end = nullptr;
+  bool overrun = false;  // more escapes than escaped deltas
+};
+
+// Reads a column's header and skips its bytes; false (with c.error) when they are not all there.
+bool open_column(Cursor& c, std::size_t n, std::uint64_t limit, const char* what, Column& col) {
+  col.what = what;
+  col.limit = limit;
+  col.mode = c.get<std::uint8_t>(what);
+  col.value = c.get<std::uint64_t>(what);
+  col.all = n ? col.value : 0;  // no records, no values to check
+  if (!c.error.empty()) return false;
+  const std::uint8_t m = col.mode;
+  if (m != 0 && m != 1 && m != 2 && m != 4 && m != 8 && m != kEscapedBytes) {
+    c.error = std::string("bad column width ") + std::to_string(m) + " in the " + what + " column";
+    return false;
+  }
+  if (m == kEscapedBytes) {
+    const std::uint32_t large = c.get<std::uint32_t>(what);
+    if (!c.error.empty()) return false;
+    if (n == 0) return true;
+    if (!c.take((n - 1) + std::size_t{large} * 8, what)) return false;
+    col.deltas = c.p;
+    col.exceptions = c.p + (n - 1);
+    col.exceptions_end = col.exceptions + std::size_t{large} * 8;
+    c.p = col.exceptions_end;
+    return true;
+  }
+  if (n == 0) return true;
+  if (!c.take((n - 1) * m, what)) return false;
+  col.deltas = c.p;
+  c.p += (n - 1) * m;
+  return true;
+}
+
+// What went wrong in a decoded column, or "".
+std::string column_error(const Column& col) {
+  if (col.mode == kEscapedBytes && (col.overrun || col.exceptions != col.exceptions_end))
+    return std::string("escaped deltas do not match their escapes in the ") + col.what + " column";
+  if (col.all > col.limit) return std::string("a value in the ") + col.what + " column is out of range";
+  return "";
+}
+
+// Eight zig-zag coded 1-byte deltas, unpacked all at once into eight signed bytes.
+inline std::uint64_t unzigzag8(std::uint64_t eight) {
+  return ((eight >> 1) & 0x7F7F7F7F7F7F7F7Full) ^ ((eight & 0x0101010101010101ull) * 0xFF);
+}
+
+// Adds eight deltas (signed bytes of `deltas`) to the running value, storing each sum.
+template <typename Record, typename Field, Field Record::*member>
+inline void add8(std::uint64_t deltas, std::uint64_t& value, std::uint64_t& all, Record* out) {
+  for (int k = 0; k < 8; ++k) {
+    value += static_cast<std::uint64_t>(static_cast<std::int64_t>(static_cast<std::int8_t>(deltas >> (8 * k))));
+    all |= value;
+    out[k].*member = static_cast<Field>(value);
   }
 }
 
-// Decodes one column into set(i, value); checks the values fit in `limit`.
-template <typename Set>
-void get_column(Cursor& c, std::size_t n, std::uint64_t limit, const char* what, Set set) {
-  const std::uint8_t width = c.get<std::uint8_t>(what);
-  const std::uint64_t first = c.get<std::uint64_t>(what);
-  if (!c.error.empty()) return;
-  if (width != 0 && width != 1 && width != 2 && width != 4 && width != 8 && width != kEscapedBytes) {
-    c.error = std::string("bad column width ") + std::to_string(width) + " in the " + what + " column";
-    return;
-  }
-  if (width == kEscapedBytes) {
-    const std::uint32_t large = c.get<std::uint32_t>(what);
-    if (!c.error.empty() || n == 0) return;
-    if (!c.take((n - 1) + std::size_t{large} * 8, what)) return;
-    const std::uint8_t* bytes = c.p;
-    const std::uint8_t* exceptions = c.p + (n - 1);
-    const std::uint8_t* const exceptions_end = exceptions + std::size_t{large} * 8;
-    std::uint64_t value = first, all = first;
-    bool overrun = false;
-    set(0, value);
-    for (std::size_t i = 1; i < n; ++i) {
-      std::uint64_t z = bytes[i - 1];
-      if (z == 0xFF) [[unlikely]] {
-        if (exceptions == exceptions_end) {
-          overrun = true;
-          z = 0;
-        } else {
-          std::memcpy(&z, exceptions, 8);
-          exceptions += 8;
-        }
-      }
-      value += unzigzag(z);
-      all |= value;
-      set(i, value);
+template <int W, typename Record, typename Field, Field Record::*member>
+void decode_fixed(Column& col, Record* out, std::size_t begin, std::size_t end) {
+  std::uint64_t value = col.value, all = col.all;
+  const std::uint8_t* p = col.deltas;
+  std::size_t i = begin;
+  if constexpr (W == 1) {
+    for (; i + 8 <= end; i += 8, p += 8) {
+      std::uint64_t eight;
+      std::memcpy(&eight, p, 8);
+      add8<Record, Field, member>(unzigzag8(eight), value, all, out + i);
     }
-    c.p = exceptions_end;
-    if (overrun || exceptions != exceptions_end)
-      c.error = std::string("escaped deltas do not match their escapes in the ") + what + " column";
-    else if (all > limit)
-      c.error = std::string("a value in the ") + what + " column is out of range";
-    return;
   }
-  if (n == 0) return;
-  const std::size_t bytes = (n - 1) * width;
-  if (!c.take(bytes, what)) return;
-  // Values are checked through the bitwise OR of all of them: one branch per column.
-  std::uint64_t all = first;
-  auto checked = [&](std::size_t i, std::uint64_t v) {
-    all |= v;
-    set(i, v);
-  };
-  switch (width) {
-    case 0: for (std::size_t i = 0; i < n; ++i) checked(i, first); break;
-    case 1: decode_deltas<1>(c.p, n, first, checked); break;
-    case 2: decode_deltas<2>(c.p, n, first, checked); break;
-    case 4: decode_deltas<4>(c.p, n, first, checked); break;
-    default: decode_deltas<8>(c.p, n, first, checked); break;
+  for (; i < end; ++i, p += W) {
+    std::uint64_t z = 0;
+    std::memcpy(&z, p, W);
+    value += unzigzag(z);
+    all |= value;
+    out[i].*member = static_cast<Field>(value);
   }
-  c.p += bytes;
-  if (all > limit) c.error = std::string("a value in the ") + what + " column is out of range";
+  col.value = value;
+  col.all = all;
+  col.deltas = p;
 }
+
+template <typename Record, typename Field, Field Record::*member>
+void decode_escaped(Column& col, Record* out, std::size_t begin, std::size_t end) {
+  std::uint64_t value = col.value, all = col.all;
+  const std::uint8_t* p = col.deltas;
+  const auto step = [&](std::size_t i) {
+    std::uint64_t z = p[i - begin];
+    if (z == 0xFF) [[unlikely]] {
+      if (col.exceptions == col.exceptions_end) {
+        col.overrun = true;
+        z = 0;
+      } else {
+        std::memcpy(&z, col.exceptions, 8);
+        col.exceptions += 8;
+      }
+    }
+    value += unzigzag(z);
+    all |= value;
+    out[i].*member = static_cast<Field>(value);
+  };
+  std::size_t i = begin;
+  for (; i + 8 <= end; i += 8) {
+    std::uint64_t eight;
+    std::memcpy(&eight, p + (i - begin), 8);
+    const std::uint64_t inverted = ~eight;  // an escape (0xFF) becomes a zero byte
+    if ((inverted - 0x0101010101010101ull) & ~inverted & 0x8080808080808080ull) [[unlikely]] {
+      for (int k = 0; k < 8; ++k) step(i + k);
+      continue;
+    }
+    add8<Record, Field, member>(unzigzag8(eight), value, all, out + i);  // the common case: no escape
+  }
+  for (; i < end; ++i) step(i);
+  col.value = value;
+  col.all = all;
+  col.deltas = p + (end - begin);
+}
+
+// Decodes records [begin, end) (begin >= 1) of one column into the field `member` of `out`.
+template <typename Record, typename Field, Field Record::*member>
+void decode_range(Column& col, Record* out, std::size_t begin, std::size_t end) {
+  switch (col.mode) {
+    case 0:
+      for (std::size_t i = begin; i < end; ++i) out[i].*member = static_cast<Field>(col.value);
+      break;
+    case 1: decode_fixed<1, Record, Field, member>(col, out, begin, end); break;
+    case 2: decode_fixed<2, Record, Field, member>(col, out, begin, end); break;
+    case 4: decode_fixed<4, Record, Field, member>(col, out, begin, end); break;
+    case 8: decode_fixed<8, Record, Field, member>(col, out, begin, end); break;
+    default: decode_escaped<Record, Field, member>(col, out, begin, end); break;
+  }
+}
+
+// Records are decoded block by block, every column of a block before the next block, so the
+// block (kBlock records of the output structs) stays in L1 while its fields are filled in.
+constexpr std::size_t kBlock = 512;
 
 }  // namespace
 
@@ -209,29 +284,64 @@ std::string decode_vertex_records(std::span<const std::uint8_t> raw, std::uint32
   draw.type = static_cast<PrimitiveType>(type);
   out.resize(n);
   VertexFetch* f = out.data();
-  get_column(c, n, 0xFFFFFFFFu, "vertex", [f](std::size_t i, std::uint64_t v) {
-    f[i].vertex = static_cast<std::uint32_t>(v);
-  });
+  Column vertex;
+  if (!open_column(c, n, 0xFFFFFFFFu, "vertex", vertex)) return c.error;
+  if (n > 0) {
+    f[0].vertex = static_cast<std::uint32_t>(vertex.value);
+    decode_range<VertexFetch, std::uint32_t, &VertexFetch::vertex>(vertex, f, 1, n);
+  }
+  if (std::string error = column_error(vertex); !error.empty()) return error;
   if (!c.take((n + 7) / 8, "primitive start bitmap")) return c.error;
   for (std::size_t i = 0; i < n; ++i) f[i].primitive_start = (c.p[i / 8] >> (i % 8)) & 1;
   c.p += (n + 7) / 8;
-  if (c.error.empty() && c.p != c.end) return "unexpected bytes after the records";
-  return c.error;
+  if (c.p != c.end) return "unexpected bytes after the records";
+  return "";
 }
 
 std::string decode_texel_records(std::span<const std::uint8_t> raw, std::uint32_t n, std::vector<TexelAccess>& out) {
   Cursor c{raw.data(), raw.data() + raw.size(), {}};
   out.resize(n);
   TexelAccess* t = out.data();
-  get_column(c, n, 0xFFFFFFFFu, "texture", [t](std::size_t i, std::uint64_t v) { t[i].texture = static_cast<std::uint32_t>(v); });
-  get_column(c, n, 0xFFu, "level", [t](std::size_t i, std::uint64_t v) { t[i].level = static_cast<std::uint8_t>(v); });
-  get_column(c, n, 0xFFFFFFFFu, "x", [t](std::size_t i, std::uint64_t v) { t[i].x = static_cast<std::uint32_t>(v); });
-  get_column(c, n, 0xFFFFFFFFu, "y", [t](std::size_t i, std::uint64_t v) { t[i].y = static_cast<std::uint32_t>(v); });
-  get_column(c, n, 0xFFFFu, "pixel x", [t](std::size_t i, std::uint64_t v) { t[i].pixel_x = static_cast<std::uint16_t>(v); });
-  get_column(c, n, 0xFFFFu, "pixel y", [t](std::size_t i, std::uint64_t v) { t[i].pixel_y = static_cast<std::uint16_t>(v); });
-  get_column(c, n, 0xFFFFFFFFu, "triangle", [t](std::size_t i, std::uint64_t v) { t[i].triangle = static_cast<std::uint32_t>(v); });
-  if (c.error.empty() && c.p != c.end) return "unexpected bytes after the records";
-  return c.error;
+  Column col[7];
+  const std::uint64_t limits[7] = {0xFFFFFFFFu, 0xFFu, 0xFFFFFFFFu, 0xFFFFFFFFu, 0xFFFFu, 0xFFFFu, 0xFFFFFFFFu};
+  const char* names[7] = {"texture", "level", "x", "y", "pixel x", "pixel y", "triangle"};
+  // Columns after a damaged header are not decoded; the ones before it are, and their errors
+  // come first (the order a column-by-column decoder would report them in).
+  int opened = 0;
+  while (opened < 7 && open_column(c, n, limits[opened], names[opened], col[opened])) ++opened;
+  const bool all = opened == 7;
+  if (n > 0) {
+    TexelAccess first{static_cast<std::uint32_t>(col[0].value), static_cast<std::uint8_t>(col[1].value),
+                      static_cast<std::uint32_t>(col[2].value), static_cast<std::uint32_t>(col[3].value),
+                      static_cast<std::uint16_t>(col[4].value), static_cast<std::uint16_t>(col[5].value),
+                      static_cast<std::uint32_t>(col[6].value)};
+    t[0] = first;
+  }
+  for (std::size_t begin = 1; begin < n; begin += kBlock) {
+    const std::size_t end = std::min<std::size_t>(n, begin + kBlock);
+    if (all) {
+      decode_range<TexelAccess, std::uint32_t, &TexelAccess::texture>(col[0], t, begin, end);
+      decode_range<TexelAccess, std::uint8_t, &TexelAccess::level>(col[1], t, begin, end);
+      decode_range<TexelAccess, std::uint32_t, &TexelAccess::x>(col[2], t, begin, end);
+      decode_range<TexelAccess, std::uint32_t, &TexelAccess::y>(col[3], t, begin, end);
+      decode_range<TexelAccess, std::uint16_t, &TexelAccess::pixel_x>(col[4], t, begin, end);
+      decode_range<TexelAccess, std::uint16_t, &TexelAccess::pixel_y>(col[5], t, begin, end);
+      decode_range<TexelAccess, std::uint32_t, &TexelAccess::triangle>(col[6], t, begin, end);
+    } else {
+      // Damaged: only the columns before the damage matter, for their errors.
+      if (opened > 0) decode_range<TexelAccess, std::uint32_t, &TexelAccess::texture>(col[0], t, begin, end);
+      if (opened > 1) decode_range<TexelAccess, std::uint8_t, &TexelAccess::level>(col[1], t, begin, end);
+      if (opened > 2) decode_range<TexelAccess, std::uint32_t, &TexelAccess::x>(col[2], t, begin, end);
+      if (opened > 3) decode_range<TexelAccess, std::uint32_t, &TexelAccess::y>(col[3], t, begin, end);
+      if (opened > 4) decode_range<TexelAccess, std::uint16_t, &TexelAccess::pixel_x>(col[4], t, begin, end);
+      if (opened > 5) decode_range<TexelAccess, std::uint16_t, &TexelAccess::pixel_y>(col[5], t, begin, end);
+    }
+  }
+  for (int k = 0; k < opened; ++k)
+    if (std::string error = column_error(col[k]); !error.empty()) return error;
+  if (!all) return c.error;
+  if (c.p != c.end) return "unexpected bytes after the records";
+  return "";
 }
 
 std::string decode_address_records(std::span<const std::uint8_t> raw, std::uint32_t n,
@@ -239,10 +349,20 @@ std::string decode_address_records(std::span<const std::uint8_t> raw, std::uint3
   Cursor c{raw.data(), raw.data() + raw.size(), {}};
   out.resize(n);
   AddressAccess* a = out.data();
-  get_column(c, n, ~std::uint64_t{0}, "address", [a](std::size_t i, std::uint64_t v) { a[i].address = v; });
-  get_column(c, n, 0xFFu, "label", [a](std::size_t i, std::uint64_t v) { a[i].label = static_cast<std::uint8_t>(v); });
-  if (c.error.empty() && c.p != c.end) return "unexpected bytes after the records";
-  return c.error;
+  Column address, label;
+  if (!open_column(c, n, ~std::uint64_t{0}, "address", address)) return c.error;
+  const bool both = open_column(c, n, 0xFFu, "label", label);
+  if (n > 0) a[0] = {address.value, static_cast<std::uint8_t>(label.value)};
+  for (std::size_t begin = 1; begin < n; begin += kBlock) {
+    const std::size_t end = std::min<std::size_t>(n, begin + kBlock);
+    decode_range<AddressAccess, std::uint64_t, &AddressAccess::address>(address, a, begin, end);
+    if (both) decode_range<AddressAccess, std::uint8_t, &AddressAccess::label>(label, a, begin, end);
+  }
+  if (std::string error = column_error(address); !error.empty()) return error;
+  if (!both) return c.error;
+  if (std::string error = column_error(label); !error.empty()) return error;
+  if (c.p != c.end) return "unexpected bytes after the records";
+  return "";
 }
 
 }  // namespace rastrace
