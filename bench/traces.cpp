@@ -148,7 +148,8 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
-  std::filesystem::remove(rastrace::texel_trace());
-  std::filesystem::remove(rastrace::vertex_trace());
+  // By name: calling texel_trace() here would write the trace just to delete it.
+  std::filesystem::remove(rastrace::temp("texels.rtrace"));
+  std::filesystem::remove(rastrace::temp("vertices.rtrace"));
   return 0;
 }

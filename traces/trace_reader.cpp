@@ -2,6 +2,7 @@
 
 #include <array>
 #include <condition_variable>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <fstream>
@@ -111,6 +112,15 @@ void load_chunk(const TraceLayout& file, ChunkSource& src, std::size_t i, Decode
 
 constexpr std::size_t kNone = ~std::size_t{0};
 
+// On with 2 or more hardware threads, unless RASTRACE_READ_AHEAD=0: a second thread only pays
+// when the process can get a second core (under Linux's autogroup scheduling, a session on a
+// busy machine gets its fair share however many threads it runs).
+bool read_ahead_by_default() {
+  const char* env = std::getenv("RASTRACE_READ_AHEAD");
+  if (env && std::string(env) == "0") return false;
+  return std::thread::hardware_concurrency() >= 2;
+}
+
 // A decoded chunk and who owns it. Free: nobody. Busy: the thread decoding into it (the
 // caller's or the read-ahead thread). Ready: decoded (or failed), waiting to be asked for.
 // Held: returned by read_chunk() until the next call.
@@ -132,7 +142,7 @@ struct TraceReader::ReadState {
   std::unique_ptr<ChunkSource> ahead;     // the read-ahead thread
   std::array<Slot, 3> slots;              // one held by the caller, one per decoding thread
   std::size_t held = kNone;
-  bool enabled = std::thread::hardware_concurrency() >= 2;
+  bool enabled = read_ahead_by_default();
   bool broken = false;                    // the thread could not start: read in the caller only
   bool wanted[4] = {false, true, true, true};
   std::size_t last = kNone;               // the chunk read last

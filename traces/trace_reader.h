@@ -64,7 +64,8 @@ class TraceReader {
   // below), a second thread with its own stream and zstd context reads, checks and decodes the
   // following chunks while the caller works on chunk i, and a caller that would wait for it
   // decodes the chunk after instead. At most 3 decoded chunks are in memory. A read out of order
-  // drops what was read ahead. On by default when the machine has 2 or more hardware threads.
+  // drops what was read ahead. On by default when the machine has 2 or more hardware threads
+  // and the environment does not set RASTRACE_READ_AHEAD=0.
   void set_read_ahead(bool enabled);
   // The kinds the caller will read (default: all); chunks of other kinds are not read ahead and
   // skipping them still counts as reading in order.
