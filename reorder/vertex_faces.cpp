@@ -1,5 +1,6 @@
 #include "reorder/vertex_faces.h"
 
+#include <memory>
 #include <string>
 
 #include "core/error.h"
@@ -18,30 +19,35 @@ MeshTopology build_vertex_faces(const Mesh& mesh) {
   t.face_count = static_cast<std::uint32_t>(mesh.face_count());
   const std::uint32_t V = t.vertex_count, F = t.face_count;
   const std::uint32_t* idx = mesh.indices.data();
+  // The count pass records each corner's rank among its vertex's faces (the count before it),
+  // so the fill is offsets[v] + rank with no read-modify-write of a per-vertex cursor: on a mesh
+  // stored in a good order consecutive faces share vertices, and such updates of one counter
+  // wait for each other. A degenerate face's repeated corner gets no rank (kNoFace).
   t.vertex_face_offsets.assign(std::size_t(V) + 1, 0);
+  std::uint32_t* const counts = t.vertex_face_offsets.data() + 1;
+  const std::unique_ptr<std::uint32_t[]> rank = std::make_unique_for_overwrite<std::uint32_t[]>(3 * std::size_t(F));
   for (std::uint32_t f = 0; f < F; ++f) {
-    const std::uint32_t a = idx[3 * f], b = idx[3 * f + 1], c = idx[3 * f + 2];
+    const std::uint32_t a = idx[3 * std::size_t(f)], b = idx[3 * std::size_t(f) + 1], c = idx[3 * std::size_t(f) + 2];
     if (a >= V || b >= V || c >= V) {
       const std::uint32_t bad = a >= V ? a : b >= V ? b : c;
       throw_in_file(name(), "face " + std::to_string(f) + ": vertex index " + std::to_string(bad) +
-                              " >= vertex count " + std::to_string(V));
+                                " >= vertex count " + std::to_string(V));
     }
-    ++t.vertex_face_offsets[a + 1];
-    if (b != a) ++t.vertex_face_offsets[b + 1];
-    if (c != a && c != b) ++t.vertex_face_offsets[c + 1];
+    std::uint32_t* r = rank.get() + 3 * std::size_t(f);
+    r[0] = counts[a]++;
+    r[1] = b != a ? counts[b]++ : kNoFace;
+    r[2] = c != a && c != b ? counts[c]++ : kNoFace;
   }
-  for (std::uint32_t v = 0; v < V; ++v) t.vertex_face_offsets[v + 1] += t.vertex_face_offsets[v];
-  t.vertex_faces.resize(t.vertex_face_offsets[V]);
-  // Fill through offsets[v + 1] used as vertex v's cursor (it starts at v's first slot, i.e.
-  // offsets[v] before the shift), so no cursor array is needed; afterwards offsets[v + 1] is v's
-  // end, which is what it must be.
-  std::uint32_t* cursor = t.vertex_face_offsets.data();
-  for (std::uint32_t v = V; v > 0; --v) cursor[v] = cursor[v - 1];
+  std::uint32_t* const offsets = t.vertex_face_offsets.data();
+  for (std::uint32_t v = 0; v < V; ++v) offsets[v + 1] += offsets[v];
+  t.vertex_faces.resize(offsets[V]);
+  std::uint32_t* const faces = t.vertex_faces.data();
   for (std::uint32_t f = 0; f < F; ++f) {
-    const std::uint32_t a = idx[3 * f], b = idx[3 * f + 1], c = idx[3 * f + 2];
-    t.vertex_faces[cursor[a + 1]++] = f;
-    if (b != a) t.vertex_faces[cursor[b + 1]++] = f;
-    if (c != a && c != b) t.vertex_faces[cursor[c + 1]++] = f;
+    const std::uint32_t* r = rank.get() + 3 * std::size_t(f);
+    const std::uint32_t* v = idx + 3 * std::size_t(f);
+    faces[offsets[v[0]] + r[0]] = f;
+    if (r[1] != kNoFace) faces[offsets[v[1]] + r[1]] = f;
+    if (r[2] != kNoFace) faces[offsets[v[2]] + r[2]] = f;
   }
   return t;
 }
