@@ -1,6 +1,6 @@
 // Sander, Nehab, Chlamtac, Hoppe 2008, Table 1: triangle-with-adjacency primitives at a FIFO of 24.
-// C/B, and CM/V with the gain over the baseline for the careful and fast orderings
-// (reorder/adjacency_order.h). The paper's fandisk has 9,926 faces and its bunny 69,473; CGAL's
+// C/B, and CM/V with the gain for the careful and fast orderings (reorder/adjacency_order.h), over
+// both baselines: kcache on the cover faces, and kcache on the whole mesh (baseline-mesh). The paper's fandisk has 9,926 faces and its bunny 69,473; CGAL's
 // copies have 12,946 and 75,408, so the rows compare like for like only in spirit.
 #include "apps/reproduce.h"
 #include "cache_sim/vertex_cache.h"
@@ -45,6 +45,8 @@ std::vector<ReproducedFigure> reproduce_sander2008() {
     const std::string figure = std::string(row.name) + ", cache 24: ";
     const std::string gain_note = std::string(row.note) + "; gain over " +
                                   to_string(AdjacencyOrder::Baseline) + " (reorder/adjacency_order.h)";
+    const std::string mesh_gain_note = std::string(row.note) + "; gain over " +
+                                       to_string(AdjacencyOrder::BaselineMesh) + " (kcache on the whole mesh)";
     if (!*row.our_mesh) {
       for (const auto& [what, value] : {std::pair{"C/B", row.c_over_b}, {"careful CM/V", row.careful},
                                         {"careful gain", row.careful_gain}, {"fast CM/V", row.fast},
@@ -57,14 +59,19 @@ std::vector<ReproducedFigure> reproduce_sander2008() {
     const CoverBound bound = adjacency_cover_lower_bound(mesh, build.dual);
     const double vertices = double(mesh.vertex_count());
     const double baseline = misses_in_order(mesh, build.primitives, AdjacencyOrder::Baseline);
+    const double baseline_mesh = misses_in_order(mesh, build.primitives, AdjacencyOrder::BaselineMesh);
     const double careful = misses_in_order(mesh, build.primitives, AdjacencyOrder::Careful);
     const double fast = misses_in_order(mesh, build.primitives, AdjacencyOrder::Fast);
     figures.push_back({paper, figure + "C/B", row.paper_mesh, row.our_mesh, row.c_over_b,
                        double(build.cover.size) / bound.bound, row.note});
     figures.push_back({paper, figure + "careful CM/V", row.paper_mesh, row.our_mesh, row.careful, careful / vertices, row.note});
     figures.push_back({paper, figure + "careful gain", row.paper_mesh, row.our_mesh, row.careful_gain, baseline / careful, gain_note});
+    figures.push_back({paper, figure + "careful gain (baseline-mesh)", row.paper_mesh, row.our_mesh, row.careful_gain,
+                       baseline_mesh / careful, mesh_gain_note});
     figures.push_back({paper, figure + "fast CM/V", row.paper_mesh, row.our_mesh, row.fast, fast / vertices, row.note});
     figures.push_back({paper, figure + "fast gain", row.paper_mesh, row.our_mesh, row.fast_gain, baseline / fast, gain_note});
+    figures.push_back({paper, figure + "fast gain (baseline-mesh)", row.paper_mesh, row.our_mesh, row.fast_gain,
+                       baseline_mesh / fast, mesh_gain_note});
   }
   return figures;
 }
