@@ -375,10 +375,13 @@ class StripCover {
   // first step.
   bool chain(std::uint32_t t, int depth, int acc) {
     const std::size_t mark_mask = undo_mask_.size(), mark_partner = undo_partner_.size();
-    for (unsigned s = 0; s < 3; ++s) {
+    // Joins first (they end the chain), then tunnels.
+    for (unsigned k = 0; k < 6; ++k) {
+      const unsigned s = k % 3;
       if (mask_[t] >> s & 1 || !linkable(t, s)) continue;
       const std::uint32_t m = topology_.neighbor(t, s);
       const std::uint32_t pt = partner_[t];
+      if ((deg(m) < 2) != (k < 3)) continue;
       if (deg(m) < 2) {
         if (m == pt) continue;
         const std::uint32_t pm = partner_[m];
