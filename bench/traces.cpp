@@ -3,15 +3,19 @@
 //     records/s)
 //   - texel trace size on disk in bytes per access (goal: at most 2 on a rendered frame); here on
 //     the synthetic frame-like trace of tests/support/synthetic_frame.h, labelled as such
+//   - the two halves of reading a given trace, zstd and column decoding, each alone
 //   - writer throughput
 // Read benchmarks run with read-ahead off (/ahead:0, one thread) and on (/ahead:1, a second
 // thread): wall-clock time, since the work is on two threads.
 #include <unistd.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 
 #include <meshoptimizer.h>
+#include <zstd.h>
 
 #include <benchmark/benchmark.h>
 
@@ -126,6 +130,62 @@ void BM_TraceReadDecode_File(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(records));
 }
 BENCHMARK(BM_TraceReadDecode_File)->ArgName("ahead")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The two halves of reading RASTRACE_BENCH_TRACE, one thread, CPU time: zstd alone (arg 0) and
+// column decoding alone (arg 1), on the chunk payloads held in memory. zstd alone bounds what
+// one thread can reach whatever the column decoder does.
+void BM_TraceChunkStages_File(benchmark::State& state) {
+  const char* path = std::getenv("RASTRACE_BENCH_TRACE");
+  if (!path) {
+    state.SkipWithError("set RASTRACE_BENCH_TRACE to a trace file");
+    return;
+  }
+  struct Payload {
+    ChunkInfo info;
+    std::vector<char> stored;
+    std::vector<std::uint8_t> raw;
+  };
+  std::vector<Payload> payloads;
+  {
+    const TraceReader reader(path);
+    std::ifstream in(path, std::ios::binary);
+    for (const ChunkInfo& c : reader.chunks()) {
+      char header[kChunkHeaderBytes];  // trace_format.h: payload bytes at 12, raw bytes at 16
+      in.seekg(static_cast<std::streamoff>(c.offset));
+      in.read(header, kChunkHeaderBytes);
+      std::uint32_t stored = 0, raw = 0;
+      std::memcpy(&stored, header + 12, 4);
+      std::memcpy(&raw, header + 16, 4);
+      Payload p{c, std::vector<char>(stored), std::vector<std::uint8_t>(raw)};
+      in.read(p.stored.data(), stored);
+      ZSTD_decompress(p.raw.data(), raw, p.stored.data(), stored);
+      payloads.push_back(std::move(p));
+    }
+  }
+  ZSTD_DCtx* dctx = ZSTD_createDCtx();
+  std::vector<std::uint8_t> raw;
+  DecodedChunk out;
+  std::uint64_t records = 0;
+  for (auto _ : state) {
+    for (const Payload& p : payloads) {
+      if (state.range(0) == 0) {
+        raw.resize(p.raw.size());
+        benchmark::DoNotOptimize(ZSTD_decompressDCtx(dctx, raw.data(), raw.size(), p.stored.data(), p.stored.size()));
+      } else if (p.info.kind == RecordKind::Vertex) {
+        benchmark::DoNotOptimize(decode_vertex_records(p.raw, p.info.records, out.draw, out.vertices));
+      } else if (p.info.kind == RecordKind::Texel) {
+        benchmark::DoNotOptimize(decode_texel_records(p.raw, p.info.records, out.texels));
+      } else {
+        benchmark::DoNotOptimize(decode_address_records(p.raw, p.info.records, out.addresses));
+      }
+      records += p.info.records;
+    }
+  }
+  ZSTD_freeDCtx(dctx);
+  state.SetItemsProcessed(static_cast<std::int64_t>(records));
+  state.SetLabel(state.range(0) == 0 ? "zstd only" : "column decoding only");
+}
+BENCHMARK(BM_TraceChunkStages_File)->ArgName("stage")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_TraceWrite_Texels(benchmark::State& state) {
   const std::string path = temp("write.rtrace");
