@@ -261,7 +261,7 @@ class StripCover {
       const std::uint32_t b = partner_[a];
       std::uint32_t from = pen(b) < pen(a) ? b : a;
       starts[out.size()] = 1;
-      for (std::uint32_t prev = kNoFace, at = from; at != kNoFace;) {
+      for (std::uint32_t prev = kNoFace, at = from; at != kNoFace && !done[at];) {  // a path: no face twice
         out.push_back(at);
         done[at] = 1;
         const std::uint32_t next = step(at, prev);
