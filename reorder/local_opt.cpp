@@ -89,14 +89,6 @@ class Local {
     model.strip_cost = kStripCost;
     return model;
   }
-  // Vertices sent (Yang et al.'s strip cost): with a one-entry cache every read is a miss.
-  static CostModel vertices_sent() {
-    CostModel model;
-    model.sizes[1] = 1;
-    model.weights[1] = 1;
-    return model;
-  }
-
   Local(const Mesh& mesh, const MeshTopology& topology, const CostModel& model, std::vector<std::uint32_t>& order)
       : mesh_(mesh), t_(topology), idx_(mesh.indices.data()), F_(order), m_(static_cast<std::uint32_t>(order.size())) {
     for (int c = 0; c < kCaches; ++c) {
@@ -612,17 +604,6 @@ void hoppe_local_optimize(const Mesh& mesh, const MeshTopology& topology, const 
     Local local(mesh, topology, Local::hoppe(params.cache_size), order);
     local.run(params, local_stats);
   }
-  if (stats) *stats = local_stats;
-}
-
-void optimize_vertices_sent(const Mesh& mesh, const MeshTopology& topology, const ReorderParams& params,
-                            std::vector<std::uint32_t>& order, LocalStats* stats) {
-  if (order.size() != topology.face_count)
-    throw InputError("strip: order has " + std::to_string(order.size()) + " faces, mesh has " +
-                     std::to_string(topology.face_count));
-  LocalStats local_stats;
-  Local local(mesh, topology, Local::vertices_sent(), order);
-  local.run(params, local_stats);
   if (stats) *stats = local_stats;
 }
 

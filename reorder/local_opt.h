@@ -48,9 +48,4 @@ struct LocalStats {
 void hoppe_local_optimize(const Mesh& mesh, const MeshTopology& topology, const ReorderParams& params,
                           std::vector<std::uint32_t>& order, LocalStats* stats = nullptr);
 
-// The same search with Yang et al.'s strip cost instead: the vertices the strip stream sends
-// (3 per strip, 1 per continuing face, 1 more per swap); no cache. Used by `strip`.
-void optimize_vertices_sent(const Mesh& mesh, const MeshTopology& topology, const ReorderParams& params,
-                            std::vector<std::uint32_t>& order, LocalStats* stats = nullptr);
-
 }  // namespace rastrace
