@@ -1,6 +1,6 @@
 // Hoppe 1999's greedy strip-growing and local optimization, and the `strip` stripifier, on the
 // CGAL meshes. Faces per second are reported as items_per_second.
-//   bench_reorder_hoppe --benchmark_filter=Greedy
+//   bench_reorder_hoppe --benchmark_filter='Greedy|MeshTopology' --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
 #include <map>
@@ -35,18 +35,41 @@ void BM_Greedy(benchmark::State& state, const std::string& name, VertexCachePoli
 }
 BENCHMARK_CAPTURE(BM_Greedy, fandisk_fifo, std::string("fandisk"), VertexCachePolicy::Fifo)
     ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Greedy, triceratops_fifo, std::string("triceratops"), VertexCachePolicy::Fifo)
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Greedy, bunny00_fifo, std::string("bunny00"), VertexCachePolicy::Fifo)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Greedy, fandisk_lru, std::string("fandisk"), VertexCachePolicy::Lru)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Greedy, bunny00_lru, std::string("bunny00"), VertexCachePolicy::Lru)
     ->Unit(benchmark::kMillisecond);
 
-// The whole `greedy` algorithm as registered: topology, greedy, strip emission.
-void BM_GreedyWhole(benchmark::State& state, const std::string& name) {
+// The whole `greedy` algorithm as registered (what `rastrace reorder MESH --algo greedy` runs):
+// topology, greedy, strip emission.
+void BM_GreedyWhole(benchmark::State& state, const std::string& name, VertexCachePolicy policy) {
   const Mesh& m = mesh(name);
-  for (auto _ : state) benchmark::DoNotOptimize(reorder_greedy(m, ReorderParams{}));
+  ReorderParams params;
+  params.policy = policy;
+  for (auto _ : state) benchmark::DoNotOptimize(reorder_greedy(m, params));
   state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(m.face_count()));
 }
-BENCHMARK_CAPTURE(BM_GreedyWhole, bunny00, std::string("bunny00"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GreedyWhole, fandisk_fifo, std::string("fandisk"), VertexCachePolicy::Fifo)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GreedyWhole, triceratops_fifo, std::string("triceratops"), VertexCachePolicy::Fifo)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GreedyWhole, bunny00_fifo, std::string("bunny00"), VertexCachePolicy::Fifo)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_GreedyWhole, bunny00_lru, std::string("bunny00"), VertexCachePolicy::Lru)
+    ->Unit(benchmark::kMillisecond);
+
+// Mesh connectivity alone (part of every whole run above).
+void BM_MeshTopology(benchmark::State& state, const std::string& name) {
+  const Mesh& m = mesh(name);
+  for (auto _ : state) benchmark::DoNotOptimize(build_mesh_topology(m));
+  state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(m.face_count()));
+}
+BENCHMARK_CAPTURE(BM_MeshTopology, fandisk, std::string("fandisk"))->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_MeshTopology, bunny00, std::string("bunny00"))->Unit(benchmark::kMillisecond);
 
 // Local optimization of fandisk's greedy order at FIFO 16, run until a pass finds nothing.
 void BM_LocalFandiskToConvergence(benchmark::State& state) {
