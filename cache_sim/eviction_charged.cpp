@@ -55,7 +55,10 @@ std::uint64_t eviction_charged_transforms(std::span<const std::uint32_t> indices
       for (std::size_t i = 0; i + 5 < indices.size(); i += 6) cache.add_primitive(&indices[i], 6);
       break;
     case PrimitiveType::TriangleStrip:
+      // As a list, as the nvmesh simulator saw strips (NvTriStrip's lists-only output): the
+      // strip's swaps and joins draw nothing and are not in it.
       for_each_triangle(indices, type, restart_index, [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        if (a == b || b == c || a == c) return;
         const std::uint32_t triangle[3] = {a, b, c};
         cache.add_primitive(triangle, 3);
       });

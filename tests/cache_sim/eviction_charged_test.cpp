@@ -82,6 +82,21 @@ TEST(EvictionCharged, StripsAreAssembledIntoTriangles) {
   EXPECT_EQ(eviction_charged_transforms(strip, PrimitiveType::TriangleStrip, 16, kNoRestart), 7u);
 }
 
+TEST(EvictionCharged, StripSwapsAndJoinsAreNotCharged) {
+  // A strip with swaps (repeated indices) and a join, on a cache too small to hide them: charged
+  // exactly as the list of the triangles it draws.
+  const std::vector<std::uint32_t> strip = {0, 1, 2, 3, 3, 2, 4, 5, 5, 9, 9, 8, 10, 11, 12, 13};
+  std::vector<std::uint32_t> drawn;
+  for_each_triangle(strip, PrimitiveType::TriangleStrip, kNoRestart, [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    if (a != b && b != c && a != c) drawn.insert(drawn.end(), {a, b, c});
+  });
+  ASSERT_EQ(drawn.size(), 3u * 8u);  // 14 assembled, 6 of them degenerate
+  for (const unsigned entries : {3u, 4u, 6u})
+    EXPECT_EQ(eviction_charged_transforms(strip, PrimitiveType::TriangleStrip, entries, kNoRestart),
+              eviction_charged_transforms(drawn, PrimitiveType::TriangleList, entries))
+        << entries << " entries";
+}
+
 TEST(EvictionCharged, ZeroEntriesIsAnError) {
   EXPECT_THROW(eviction_charged_transforms(std::vector<std::uint32_t>{0, 1, 2}, PrimitiveType::TriangleList, 0),
                InputError);
