@@ -46,6 +46,7 @@ Table reproduction_table(const ReproduceOptions& options) {
     if (!known) throw InputError("--paper '" + name + "': expected all, castano, hoppe, yang, yang-texture, sander or forsyth");
     wanted.push_back(name);
   }
+  if (wanted.empty()) throw InputError("--paper '': expected all, castano, hoppe, yang, yang-texture, sander or forsyth");
 
   Table table;
   table.title = "Published figures (REFERENCE.md) and rastrace's";

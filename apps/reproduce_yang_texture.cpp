@@ -62,7 +62,9 @@ double mean_percent(const std::map<std::uint64_t, std::uint64_t>& more, const st
   for (const auto& [size, m] : more) {
     if (size > largest) continue;
     const double f = double(fewer.at(size));
-    sum += 100.0 * (double(m) - f) / (of_more ? double(m) : f);
+    const double divisor = of_more ? double(m) : f;
+    if (divisor == 0.0) continue;  // no misses at this size: no percentage to take
+    sum += 100.0 * (double(m) - f) / divisor;
     ++count;
   }
   return count ? sum / count : 0.0;

@@ -68,10 +68,11 @@ void load_chunk(const TraceLayout& file, ChunkSource& src, std::size_t i, Decode
   const std::string& path = file.path;
   const ChunkInfo& info = file.chunks[i];
   const std::string where = "chunk " + std::to_string(i) + ": ";
-  std::uint8_t h[kChunkHeaderBytes];
+  std::uint8_t h[kChunkHeaderBytes] = {};
   src.in.clear();
   src.in.seekg(static_cast<std::streamoff>(info.offset));
   src.in.read(reinterpret_cast<char*>(h), kChunkHeaderBytes);
+  if (!src.in) throw_at_byte(path, info.offset, where + "read failed (the file is shorter than its index says)");
   if (load<std::uint32_t>(h) != kChunkTag) throw_at_byte(path, info.offset, where + "bad chunk tag, expected 'CHNK'");
   const std::uint8_t kind = h[4];
   const std::uint8_t flags = h[5];
@@ -140,6 +141,9 @@ struct Slot {
 struct TraceReader::ReadState {
   ChunkSource caller;                     // the caller's thread
   std::unique_ptr<ChunkSource> ahead;     // the read-ahead thread
+  // Opened with the caller's stream, so both read the same file even if the path is replaced
+  // (written atomically by rename) before the first in-order read starts the thread.
+  std::ifstream ahead_stream;
   std::array<Slot, 3> slots;              // one held by the caller, one per decoding thread
   std::size_t held = kNone;
   bool enabled = read_ahead_by_default();
@@ -305,6 +309,7 @@ TraceReader::TraceReader(const std::string& path) : path_(path) {
     chunks_.push_back(c);
   }
   state_ = std::make_unique<ReadState>(std::move(in_));
+  state_->ahead_stream.open(path, std::ios::binary);
 }
 
 TraceReader::~TraceReader() = default;
@@ -393,9 +398,8 @@ const DecodedChunk& TraceReader::read_chunk(std::size_t i) {
     s.cursor = s.next_to_read_ahead(chunks_, i);
     if (s.cursor != kNone && !s.thread.joinable()) {
       try {
-        std::ifstream in(path_, std::ios::binary);
-        if (!in) throw std::runtime_error("cannot reopen");
-        s.ahead = std::make_unique<ChunkSource>(std::move(in));
+        if (!s.ahead_stream.is_open() || !s.ahead_stream) throw std::runtime_error("no second stream");
+        s.ahead = std::make_unique<ChunkSource>(std::move(s.ahead_stream));
         s.thread = std::thread([&s, file] { s.run(file); });
       } catch (const std::exception&) {
         s.broken = true;  // no second stream or thread: everything is read by the caller
@@ -414,6 +418,7 @@ const DecodedChunk& TraceReader::read_chunk(std::size_t i) {
     slot->error = nullptr;
     slot->state = Slot::State::Free;
     s.held = kNone;
+    s.work.notify_one();  // the slot is free for the read-ahead thread again
     std::rethrow_exception(error);
   }
   return slot->decoded;

@@ -232,6 +232,22 @@ void damage_chunk(const std::string& from, const std::string& to, std::size_t ch
   put_bytes(to, bytes);
 }
 
+TEST_F(ReadAhead, FileCutShortAfterOpeningIsAReadErrorAtTheFirstMissingChunk) {
+  for (const bool ahead : {false, true}) {
+    const std::string cut = temp_path(ahead ? "cut-ahead.rtrace" : "cut.rtrace");
+    std::filesystem::copy_file(*path_, cut, std::filesystem::copy_options::overwrite_existing);
+    TraceReader reader(cut);
+    reader.set_read_ahead(ahead);
+    const std::size_t last_whole = 10;
+    std::filesystem::resize_file(cut, reader.chunks()[last_whole + 1].offset);  // chunks 0-10 left
+    for (std::size_t i = 0; i <= last_whole; ++i) ASSERT_TRUE(copy_of(reader.read_chunk(i)) == (*reference_)[i]) << i;
+    const std::string error = error_of(reader, last_whole + 1);
+    EXPECT_THAT(error, HasSubstr("byte " + std::to_string(reader.chunks()[last_whole + 1].offset) + ": chunk 11: read failed"))
+        << (ahead ? "read-ahead" : "plain");
+    std::filesystem::remove(cut);
+  }
+}
+
 TEST_F(ReadAhead, DamagedChunkInTheMiddleIsReportedAtThatChunkAfterTheEarlierOnes) {
   const std::string damaged = temp_path("damaged.rtrace");
   const std::size_t bad = 137;
