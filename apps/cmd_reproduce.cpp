@@ -1,12 +1,11 @@
 // `rastrace reproduce [--paper all|castano,hoppe,yang,yang-texture,sander,forsyth] [--local-iterations N]
 //  [--format md|csv|latex|json] [-o FILE]`: every published figure of REFERENCE.md beside ours,
 // measured now, with the difference (apps/reproduce.h).
-#include <iostream>
 #include <memory>
 
+#include "apps/cache_report.h"
 #include "apps/commands.h"
 #include "apps/reproduce.h"
-#include "core/atomic_file.h"
 
 namespace rastrace {
 
@@ -20,9 +19,7 @@ struct ReproduceCommand {
 
 void run_reproduce(const ReproduceCommand& command) {
   const TableFormat format = parse_table_format(command.format);
-  const std::string text = render_table(reproduction_table(command.options), format);
-  if (command.output.empty()) std::cout << text;
-  else write_file_atomically(command.output, [&](std::ostream& out) { out << text; }, false);
+  write_output(command.output, render_table(reproduction_table(command.options), format));
 }
 
 }  // namespace

@@ -9,7 +9,6 @@
 #include <memory>
 #include <set>
 
-#include <unistd.h>
 
 #include "apps/cache_report.h"
 #include "apps/commands.h"
@@ -114,18 +113,7 @@ void run_texsweep(const TexsweepCommand& command, const CLI::App& app) {
   experiment.sweep = sweep_spec_from(c.sweep);
   experiment.image_dir = c.image_dir;
 
-  // Traces go to --traces DIR (kept) or to a private temporary folder removed afterwards.
-  const bool keep_traces = !c.trace_dir.empty();
-  experiment.trace_dir = keep_traces ? c.trace_dir
-                                     : (std::filesystem::temp_directory_path() /
-                                        ("rastrace-texsweep-" + std::to_string(::getpid()))).string();
-  struct RemoveTemporary {
-    std::string dir;
-    ~RemoveTemporary() {
-      std::error_code ignored;
-      if (!dir.empty()) std::filesystem::remove_all(dir, ignored);
-    }
-  } cleanup{keep_traces ? std::string() : experiment.trace_dir};
+  experiment.trace_dir = c.trace_dir;  // empty: temporary, removed afterwards
 
   const std::vector<TextureRun> runs = run_texture_experiment(experiment);
   if (!c.plot_dir.empty()) write_plots(c.plot_dir, stem, experiment.title, runs);

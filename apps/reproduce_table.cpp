@@ -26,6 +26,10 @@ double number(const TableCell& cell) {
                                                     : double(std::get<std::int64_t>(cell.value));
 }
 
+// The value as a table prints it (3 decimals, ties to even like printf), so a figure that prints
+// as the published one shows no difference.
+double printed(double value) { return std::nearbyint(value * 1000.0) / 1000.0; }
+
 }  // namespace
 
 Table reproduction_table(const ReproduceOptions& options) {
@@ -63,13 +67,11 @@ Table reproduction_table(const ReproduceOptions& options) {
     for (const ReproducedFigure& figure : run(options)) {
       TableCell difference, percent;
       if (is_number(figure.published) && is_number(figure.ours)) {
-        if (std::holds_alternative<std::int64_t>(figure.published.value) &&
-            std::holds_alternative<std::int64_t>(figure.ours.value))
-          difference = std::get<std::int64_t>(figure.ours.value) - std::get<std::int64_t>(figure.published.value);
-        else
-          difference = std::nearbyint(number(figure.ours) * 1000.0) / 1000.0 - number(figure.published);
-        percent = 100.0 * (std::nearbyint(number(figure.ours) * 1000.0) / 1000.0 - number(figure.published)) /
-                  number(figure.published);
+        const double gap = printed(number(figure.ours)) - number(figure.published);
+        const bool counts = std::holds_alternative<std::int64_t>(figure.published.value) &&
+                            std::holds_alternative<std::int64_t>(figure.ours.value);
+        difference = counts ? TableCell(static_cast<std::int64_t>(gap)) : TableCell(gap);
+        percent = 100.0 * gap / number(figure.published);
       }
       table.add_row({figure.paper, figure.figure, figure.paper_mesh, figure.our_mesh.empty() ? "-" : figure.our_mesh,
                      figure.published, figure.ours, difference, percent, figure.note});

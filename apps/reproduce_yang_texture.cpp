@@ -8,10 +8,7 @@
 //   grouping costs about 10% more in the vertex cache.
 // The paper gives ranges and "about"s: the published column holds the stated figure or a range's
 // midpoint, the note the paper's words.
-#include <filesystem>
 #include <map>
-
-#include <unistd.h>
 
 #include "apps/reproduce.h"
 #include "apps/sweep_flags.h"
@@ -36,15 +33,6 @@ Misses run_experiment(const std::string& scene, const std::string& policies) {
   experiment.vertex_cache = parse_vcache_spec("fifo:16");
   experiment.sweep = sweep_spec_from(SweepFlags{.sizes = "1KiB..16KiB", .lines = "64B", .assocs = "full",
                                                 .policies = policies, .layouts = "linear"});
-  experiment.trace_dir =
-      (std::filesystem::temp_directory_path() / ("rastrace-reproduce-" + std::to_string(::getpid()))).string();
-  struct RemoveTemporary {
-    std::string dir;
-    ~RemoveTemporary() {
-      std::error_code ignored;
-      std::filesystem::remove_all(dir, ignored);
-    }
-  } cleanup{experiment.trace_dir};
   Misses misses;
   for (const TextureRun& run : run_texture_experiment(experiment)) {
     misses.acmr[run.order] = run.vertex.acmr();

@@ -2,6 +2,8 @@
 
 #include <filesystem>
 
+#include <unistd.h>
+
 #include "core/error.h"
 #include "core/units.h"
 #include "traces/trace_writer.h"
@@ -44,7 +46,19 @@ std::vector<TextureRun> run_texture_experiment(const TextureExperiment& experime
   const Scene scene = load_render_scene(flags);
   const TextureLevels levels = texture_levels(scene);
   if (levels.empty()) throw InputError(flags.scene + ": the scene has no texture, so there is no texture cache to measure");
-  std::filesystem::create_directories(experiment.trace_dir);
+  // Without a trace folder the traces live only as long as their sweeps: a private temporary one.
+  const bool keep_traces = !experiment.trace_dir.empty();
+  const std::string trace_dir =
+      keep_traces ? experiment.trace_dir
+                  : (std::filesystem::temp_directory_path() / ("rastrace-traces-" + std::to_string(::getpid()))).string();
+  struct RemoveTemporary {
+    std::string dir;
+    ~RemoveTemporary() {
+      std::error_code ignored;
+      if (!dir.empty()) std::filesystem::remove_all(dir, ignored);
+    }
+  } cleanup{keep_traces ? std::string() : trace_dir};
+  std::filesystem::create_directories(trace_dir);
   if (!experiment.image_dir.empty()) std::filesystem::create_directories(experiment.image_dir);
 
   std::vector<TextureRun> runs;
@@ -68,7 +82,7 @@ std::vector<TextureRun> run_texture_experiment(const TextureExperiment& experime
       run.order = order;
       run.raster = raster;
       run.vertex = vertex;
-      run.trace_path = (std::filesystem::path(experiment.trace_dir) / (order + "-" + raster + ".rtrace")).string();
+      run.trace_path = (std::filesystem::path(trace_dir) / (order + "-" + raster + ".rtrace")).string();
       TraceMetadata metadata;
       metadata.scene = flags.scene;
       metadata.ordering = order;
@@ -88,6 +102,7 @@ std::vector<TextureRun> run_texture_experiment(const TextureExperiment& experime
         result.framebuffer.write_colour(run.image_path);
       }
       run.sweep = run_sweep(run.trace_path, experiment.sweep);
+      if (!keep_traces) run.trace_path.clear();
       runs.push_back(std::move(run));
     }
   }

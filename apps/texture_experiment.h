@@ -26,7 +26,8 @@ struct TextureExperiment {
   std::string texgroup_regions = "auto";
   VertexCacheSpec vertex_cache;            // the post-transform cache orderings target and ACMR uses
   SweepSpec sweep;
-  std::string trace_dir;                   // where the traces are written (kept)
+  std::string trace_dir;                   // where the traces are kept; empty: a private temporary
+                                           // folder, removed before returning (trace_path empty)
   std::string image_dir;                   // empty: no images; else <order>-<raster>.png
 };
 
