@@ -15,7 +15,9 @@ namespace rastrace {
 std::vector<std::pair<std::string, TableCell>> trace_parameters(const std::string& path, const TraceSummary& s) {
   std::vector<std::pair<std::string, TableCell>> p;
   p.emplace_back("trace", std::filesystem::path(path).filename().string());
-  const char* format = s.format == TraceFileFormat::Container ? "rastrace" : s.format == TraceFileFormat::Csv ? "csv" : "din";
+  const char* format = s.format == TraceFileFormat::Container ? "rastrace"
+                       : s.format == TraceFileFormat::Csv     ? "csv"
+                                                              : "din";
   p.emplace_back("trace_format", format);
   if (s.format != TraceFileFormat::Din) {
     p.emplace_back("scene", s.metadata.scene);
@@ -33,15 +35,24 @@ Table byte_cache_table(const std::string& title, std::vector<std::pair<std::stri
   t.title = title;
   t.parameters = std::move(parameters);
   t.parameters.emplace_back("source", source);
-  t.columns = {{"size_bytes", "size (B)", 0},   {"line_bytes", "line (B)", 0},  {"assoc", "assoc (0=full)", 0},
-               {"policy", "policy", 0},          {"layout", "layout", 0},        {"accesses", "accesses", 0},
-               {"hits", "hits", 0},              {"misses", "misses", 0},        {"miss_rate", "miss rate", 5},
-               {"bytes_fetched", "bytes fetched", 0}, {"compulsory", "compulsory", 0}, {"capacity", "capacity", 0},
+  t.columns = {{"size_bytes", "size (B)", 0},
+               {"line_bytes", "line (B)", 0},
+               {"assoc", "assoc (0=full)", 0},
+               {"policy", "policy", 0},
+               {"layout", "layout", 0},
+               {"accesses", "accesses", 0},
+               {"hits", "hits", 0},
+               {"misses", "misses", 0},
+               {"miss_rate", "miss rate", 5},
+               {"bytes_fetched", "bytes fetched", 0},
+               {"compulsory", "compulsory", 0},
+               {"capacity", "capacity", 0},
                {"conflict", "conflict", 0}};
   for (const SweepRow& r : rows) {
     const CacheStats& s = r.stats;
     std::vector<TableCell> cells = {r.cache.size_bytes, r.cache.line_bytes, r.cache.assoc, to_string(r.cache.policy),
-                                    r.layout, s.accesses, s.hits, s.misses, s.miss_rate(), s.bytes_fetched};
+                                    r.layout,           s.accesses,         s.hits,        s.misses,
+                                    s.miss_rate(),      s.bytes_fetched};
     if (s.has_three_c) {
       cells.emplace_back(s.compulsory);
       cells.emplace_back(s.capacity);
@@ -59,9 +70,9 @@ Table vertex_cache_table(const std::string& title, std::vector<std::pair<std::st
   Table t;
   t.title = title;
   t.parameters = std::move(parameters);
-  t.columns = {{"policy", "policy", 0},       {"entries", "entries", 0},   {"lookups", "lookups", 0},
-               {"misses", "misses", 0},       {"triangles", "triangles", 0}, {"degenerate", "degenerate", 0},
-               {"vertices", "vertices", 0},   {"acmr", "ACMR", 3},           {"atvr", "ATVR", 3}};
+  t.columns = {{"policy", "policy", 0},     {"entries", "entries", 0},     {"lookups", "lookups", 0},
+               {"misses", "misses", 0},     {"triangles", "triangles", 0}, {"degenerate", "degenerate", 0},
+               {"vertices", "vertices", 0}, {"acmr", "ACMR", 3},           {"atvr", "ATVR", 3}};
   for (const VertexSweepRow& r : rows)
     t.add_row({to_string(r.cache.policy), r.cache.entries, r.stats.lookups, r.stats.misses, r.stats.triangles,
                r.stats.degenerate, r.stats.vertices, r.stats.acmr(), r.stats.atvr()});
@@ -74,7 +85,8 @@ void write_output(const std::string& path, const std::string& text) {
     if (!text.empty() && text.back() != '\n') std::cout << '\n';
     return;
   }
-  write_file_atomically(path, [&](std::ostream& out) { out << text; }, false);
+  write_file_atomically(
+      path, [&](std::ostream& out) { out << text; }, false);
 }
 
 SweepSource default_source(const TraceSummary& s) {
@@ -110,7 +122,8 @@ void write_size_plot(const std::string& path, const std::string& title, const st
   if (extension != ".png" && extension != ".svg")
     throw InputError("--plot " + path + ": expected a .png or .svg file name");
   std::string script;
-  script += extension == ".png" ? "set terminal pngcairo size 1000,650 noenhanced\n" : "set terminal svg size 1000,650 noenhanced\n";
+  script += extension == ".png" ? "set terminal pngcairo size 1000,650 noenhanced\n"
+                                : "set terminal svg size 1000,650 noenhanced\n";
   script += "set logscale x 2\nset xlabel 'cache size'\nset ylabel '" + y_label + "'\n";
   std::set<std::uint64_t> sizes;
   for (const auto& entry : series)

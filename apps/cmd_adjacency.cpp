@@ -122,7 +122,8 @@ void write_index_buffer(const std::string& path, const std::vector<std::uint32_t
 void run_adjacency(const AdjacencyOptions& options) {
   const TableFormat format = parse_table_format(options.format);
   if (options.cache == 0) throw InputError("--cache 0: a vertex cache needs at least 1 entry");
-  if (options.size < 16 || options.size > 8192) throw InputError("--size " + std::to_string(options.size) + ": expected 16..8192");
+  if (options.size < 16 || options.size > 8192)
+    throw InputError("--size " + std::to_string(options.size) + ": expected 16..8192");
   std::vector<AdjacencyOrder> orders;
   if (options.order == "all")
     orders = {AdjacencyOrder::Careful, AdjacencyOrder::Fast, AdjacencyOrder::Baseline, AdjacencyOrder::BaselineMesh};
@@ -149,8 +150,8 @@ void run_adjacency(const AdjacencyOptions& options) {
   };
   // The gains are always against both baselines, even when they are not printed.
   auto start = std::chrono::steady_clock::now();
-  const AdjacencyPrimitives baseline =
-      permute_primitives(build.primitives, order_adjacency(AdjacencyOrder::Baseline, mesh, build.primitives, options.cache));
+  const AdjacencyPrimitives baseline = permute_primitives(
+      build.primitives, order_adjacency(AdjacencyOrder::Baseline, mesh, build.primitives, options.cache));
   const double baseline_seconds = seconds_since(start);
   const double baseline_misses = double(misses_of(baseline));
   start = std::chrono::steady_clock::now();
@@ -269,7 +270,8 @@ void run_adjacency(const AdjacencyOptions& options) {
     ReorderParams reorder_params;
     reorder_params.cache_size = options.cache;
     const Ordering faces = find_reorder_algorithm("kcache").run(mesh, reorder_params);
-    const AdjacencyPrimitives naive = permute_primitives(encode_one_primitive_per_face(mesh, build.dual), faces.face_order);
+    const AdjacencyPrimitives naive =
+        permute_primitives(encode_one_primitive_per_face(mesh, build.dual), faces.face_order);
     add_row("naive", naive, double(misses_of(naive)), seconds_since(start));
   }
   std::cout << render_table(table, format);
@@ -288,7 +290,8 @@ void add_adjacency_command(CLI::App& app) {
   auto options = std::make_shared<AdjacencyOptions>();
   command->add_option("mesh", options->mesh, "Mesh file, builtin:<scene> or grid:WxH")->required();
   command->add_option("--cache", options->cache, "FIFO post-transform cache entries")->capture_default_str();
-  command->add_option("--order", options->order, "careful, fast, baseline, baseline-mesh or all")->capture_default_str();
+  command->add_option("--order", options->order, "careful, fast, baseline, baseline-mesh or all")
+      ->capture_default_str();
   command->add_option("--seed", options->seed, "Seed of the cover's local search")->capture_default_str();
   command->add_option("--iterations", options->iterations,
                       "Local-search iterations for the cover (default: 20 per face)");

@@ -36,7 +36,8 @@ struct CompareCommand {
 void run_compare(CompareCommand command) {
   const TableFormat format = command.json ? TableFormat::Json : parse_table_format(command.format);
   const ReferenceDriver driver = parse_reference_driver(command.driver);
-  if (command.flags.lod == "auto") command.flags.lod = driver == ReferenceDriver::Softpipe ? "max_component" : "lengths";
+  if (command.flags.lod == "auto")
+    command.flags.lod = driver == ReferenceDriver::Softpipe ? "max_component" : "lengths";
   if (command.flags.order != "original")
     throw InputError("compare draws the scene's own triangle order: --order is not supported here");
   RenderOptions options = render_options_from(command.flags);
@@ -57,7 +58,8 @@ void run_compare(CompareCommand command) {
   const Framebuffer& fb = ours.framebuffer;
   const ImageDifference d =
       compare_images(fb.width(), fb.height(), fb.colour(), reference.rgba.data(), fb.centre_on_edge());
-  if (!command.diff.empty()) write_difference_image(command.diff, fb.width(), fb.height(), fb.colour(), reference.rgba.data());
+  if (!command.diff.empty())
+    write_difference_image(command.diff, fb.width(), fb.height(), fb.colour(), reference.rgba.data());
   if (!command.save.empty()) {
     fb.write_colour(command.save + "-rastrace.png");
     write_rgba8_image(command.save + "-" + command.driver + ".png", fb.width(), fb.height(), reference.rgba.data(), 3);
@@ -89,16 +91,16 @@ void run_compare(CompareCommand command) {
                    {"psnr_image", "image PSNR dB", 2}};
   auto db = [](double value) { return std::isfinite(value) ? TableCell(value) : TableCell("inf"); };
   table.add_row({command.driver, d.pixels, d.covered, d.coverage_differs, d.coverage_differs_near_edge,
-                 d.coverage_differs_off_edge,
-                 d.fraction(d.diff_gt_1), d.fraction(d.diff_gt_2), d.fraction(d.diff_gt_8), d.max_difference, db(d.psnr),
-                 db(d.psnr_image)});
+                 d.coverage_differs_off_edge, d.fraction(d.diff_gt_1), d.fraction(d.diff_gt_2), d.fraction(d.diff_gt_8),
+                 d.max_difference, db(d.psnr), db(d.psnr_image)});
   std::cout << render_table(table, format);
 }
 
 }  // namespace
 
 void add_compare_command(CLI::App& app) {
-  CLI::App* command = app.add_subcommand("compare", "Compare rastrace's image of a scene with OSMesa's (softpipe or llvmpipe)");
+  CLI::App* command =
+      app.add_subcommand("compare", "Compare rastrace's image of a scene with OSMesa's (softpipe or llvmpipe)");
   auto options = std::make_shared<CompareCommand>();
   options->flags.lod = "auto";
   add_scene_render_flags(*command, options->flags);

@@ -15,7 +15,8 @@ void add_convert_command(CLI::App& app) {
   auto output = std::make_shared<std::string>();
   auto ascii = std::make_shared<bool>(false);
   command->add_option("input", *input, "Mesh file (.off .ply .obj .gltf .dae ...)")->required();
-  command->add_option("output", *output, "Output file: .off, .ply (binary unless --ascii) or .obj (+ .mtl)")->required();
+  command->add_option("output", *output, "Output file: .off, .ply (binary unless --ascii) or .obj (+ .mtl)")
+      ->required();
   command->add_flag("--ascii", *ascii, "Write PLY as ASCII instead of binary little-endian");
   command->footer(
       "Examples:\n"

@@ -37,7 +37,9 @@ double shortest(float value) {
   return std::stod(text);
 }
 
-nlohmann::json vec3_json(const glm::vec3& v) { return nlohmann::json::array({shortest(v.x), shortest(v.y), shortest(v.z)}); }
+nlohmann::json vec3_json(const glm::vec3& v) {
+  return nlohmann::json::array({shortest(v.x), shortest(v.y), shortest(v.z)});
+}
 
 nlohmann::json stats_json(const MeshStats& s, const glm::vec3& lo, const glm::vec3& hi) {
   return {{"vertices", s.vertices},
@@ -87,8 +89,8 @@ void run_info(const std::string& spec, bool as_json) {
     nlohmann::json out = stats_json(total, lo, hi);
     out["scene"] = scene.name;
     out["viewport"] = {{"width", scene.width}, {"height", scene.height}};
-    out["camera"] = {{"eye", vec3_json(scene.camera.eye)},   {"target", vec3_json(scene.camera.target)},
-                     {"up", vec3_json(scene.camera.up)},     {"fov_y", shortest(scene.camera.fov_y_degrees)},
+    out["camera"] = {{"eye", vec3_json(scene.camera.eye)},        {"target", vec3_json(scene.camera.target)},
+                     {"up", vec3_json(scene.camera.up)},          {"fov_y", shortest(scene.camera.fov_y_degrees)},
                      {"near", shortest(scene.camera.near_plane)}, {"far", shortest(scene.camera.far_plane)}};
     nlohmann::json list = nlohmann::json::array();
     for (const ObjectInfo& o : objects) {
@@ -134,7 +136,9 @@ void add_info_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand("info", "Describe a mesh file or scene: counts, bounds, topology");
   auto spec = std::make_shared<std::string>();
   auto as_json = std::make_shared<bool>(false);
-  command->add_option("input", *spec, "Mesh file (.off .ply .obj .gltf .dae ...), scene (.json) or builtin:grid|bunny|spider")
+  command
+      ->add_option("input", *spec,
+                   "Mesh file (.off .ply .obj .gltf .dae ...), scene (.json) or builtin:grid|bunny|spider")
       ->required();
   command->add_flag("--json", *as_json, "Print one JSON object (totals, and per object under \"objects\")");
   command->footer(

@@ -64,8 +64,11 @@ void run_render(const RenderCommand& command) {
     metadata.height = static_cast<std::uint32_t>(scene.height);
     metadata.filter = command.flags.filter;
     metadata.textures = levels;
-    metadata.extra = {{"raster", command.flags.raster}, {"wrap", command.flags.wrap}, {"lod", command.flags.lod},
-                      {"cull", command.flags.cull}, {"lighting", command.flags.lighting ? "on" : "off"}};
+    metadata.extra = {{"raster", command.flags.raster},
+                      {"wrap", command.flags.wrap},
+                      {"lod", command.flags.lod},
+                      {"cull", command.flags.cull},
+                      {"lighting", command.flags.lighting ? "on" : "off"}};
     writer.emplace(command.trace, metadata);
     sinks.push_back(&*writer);
   }
@@ -83,18 +86,13 @@ void run_render(const RenderCommand& command) {
 
   Table table;
   table.title = "Frame: " + scene.name;
-  table.parameters = {{"scene", command.flags.scene},
-                      {"size", std::to_string(scene.width) + "x" + std::to_string(scene.height)},
-                      {"order", command.flags.order},
-                      {"vcache", command.vcache},
-                      {"tcache", describe(tcache.cache)},
-                      {"layout", layout_name(tcache.layout)},
-                      {"raster", command.flags.raster},
-                      {"filter", command.flags.filter},
-                      {"wrap", command.flags.wrap},
-                      {"lod", command.flags.lod},
-                      {"cull", command.flags.cull},
-                      {"image", command.output}};
+  table.parameters = {
+      {"scene", command.flags.scene},     {"size", std::to_string(scene.width) + "x" + std::to_string(scene.height)},
+      {"order", command.flags.order},     {"vcache", command.vcache},
+      {"tcache", describe(tcache.cache)}, {"layout", layout_name(tcache.layout)},
+      {"raster", command.flags.raster},   {"filter", command.flags.filter},
+      {"wrap", command.flags.wrap},       {"lod", command.flags.lod},
+      {"cull", command.flags.cull},       {"image", command.output}};
   if (!command.trace.empty()) table.parameters.emplace_back("trace", command.trace);
   table.columns = {{"triangles", "triangles drawn", 0},
                    {"culled", "culled", 0},
@@ -116,7 +114,8 @@ void run_render(const RenderCommand& command) {
 }  // namespace
 
 void add_render_command(CLI::App& app) {
-  CLI::App* command = app.add_subcommand("render", "Draw a scene, simulate its vertex and texture caches, write the image");
+  CLI::App* command =
+      app.add_subcommand("render", "Draw a scene, simulate its vertex and texture caches, write the image");
   auto options = std::make_shared<RenderCommand>();
   add_scene_render_flags(*command, options->flags);
   command->add_option("-o,--output", options->output, "Colour image (PNG, or any format by extension)")->required();

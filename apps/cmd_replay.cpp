@@ -30,7 +30,8 @@ CacheSpec parse_cache_spec(const std::string& text) {
   for (const std::string& item : split_list(text, "--cache")) {
     const std::size_t eq = item.find('=');
     if (eq == std::string::npos)
-      throw InputError("--cache '" + text + "': item '" + item + "': expected key=value (size, line, assoc, policy, layout, "
+      throw InputError("--cache '" + text + "': item '" + item +
+                       "': expected key=value (size, line, assoc, policy, layout, "
                        "texel, align, stride, source, seed, entries)");
     const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
     if (key == "entries") {
@@ -44,7 +45,8 @@ CacheSpec parse_cache_spec(const std::string& text) {
       spec.cache.line_bytes = static_cast<std::uint32_t>(parse_byte_size(value, "--cache line"));
     } else if (key == "assoc") {
       spec.cache.assoc = value == "full" ? 0 : static_cast<std::uint32_t>(parse_count(value, "--cache assoc"));
-      if (value != "full" && spec.cache.assoc == 0) throw InputError("--cache assoc=0: expected a number of ways or 'full'");
+      if (value != "full" && spec.cache.assoc == 0)
+        throw InputError("--cache assoc=0: expected a number of ways or 'full'");
     } else if (key == "policy") {
       policy = value;
     } else if (key == "layout") {
@@ -86,11 +88,12 @@ void add_replay_command(CLI::App& app) {
   auto output = std::make_shared<std::string>();
   auto keep_vertex_cache = std::make_shared<bool>(false);
   command->add_option("trace", *trace, "Trace file: rastrace trace (.rtrace), .csv export or Dinero .din")->required();
-  command->add_option("--cache", *specs,
-                      "Cache to simulate (repeatable). Byte cache: size=16KiB,line=64B,assoc=4|full,"
-                      "policy=fifo|lru|random|opt,layout=linear|block2..block16|morton[,texel=4B][,align=4KiB]"
-                      "[,source=texel|vertex|address][,stride=32B][,seed=1]. Post-transform vertex cache: "
-                      "entries=16,policy=fifo|lru")
+  command
+      ->add_option("--cache", *specs,
+                   "Cache to simulate (repeatable). Byte cache: size=16KiB,line=64B,assoc=4|full,"
+                   "policy=fifo|lru|random|opt,layout=linear|block2..block16|morton[,texel=4B][,align=4KiB]"
+                   "[,source=texel|vertex|address][,stride=32B][,seed=1]. Post-transform vertex cache: "
+                   "entries=16,policy=fifo|lru")
       ->required();
   command->add_option("--format", *format, "Table format: md, csv, latex or json");
   command->add_option("-o,--output", *output, "Write the table to this file (atomically) instead of stdout");
@@ -144,8 +147,8 @@ void add_replay_command(CLI::App& app) {
       p.emplace_back("vertex_cache_per_draw", *keep_vertex_cache ? "kept" : "flushed");
       tables.push_back(vertex_cache_table("Post-transform vertex caches", p, rows));
     }
-    const auto add_byte_table = [&](std::vector<SweepRow>& rows, const std::vector<CacheStats>& stats, const char* title,
-                                    const char* source) {
+    const auto add_byte_table = [&](std::vector<SweepRow>& rows, const std::vector<CacheStats>& stats,
+                                    const char* title, const char* source) {
       if (rows.empty()) return;
       for (std::size_t i = 0; i < rows.size(); ++i) rows[i].stats = stats[i];
       auto p = parameters;
@@ -166,7 +169,8 @@ void add_replay_command(CLI::App& app) {
       }
       bool same_seed = true;
       for (const SweepRow& r : rows) same_seed = same_seed && r.cache.seed == rows.front().cache.seed;
-      if (same_seed) p.emplace_back("random_seed", rows.front().cache.seed);
+      if (same_seed)
+        p.emplace_back("random_seed", rows.front().cache.seed);
       else
         for (SweepRow& r : rows) r.layout += " seed=" + std::to_string(r.cache.seed);
       tables.push_back(byte_cache_table(title, p, rows, source));

@@ -28,7 +28,10 @@ struct ReportCommand {
   std::string output_dir = "out";
   std::string orders = "strip,texgroup,tipsy";
   std::string vcache_orders = "original,scanline,morton,hilbert,strip,forsyth,tipsy,kcache,greedy,texgroup";
-  SweepFlags sweep{.sizes = "1KiB..64KiB", .lines = "64B", .assocs = "full", .policies = "fifo,lru,opt",
+  SweepFlags sweep{.sizes = "1KiB..64KiB",
+                   .lines = "64B",
+                   .assocs = "full",
+                   .policies = "fifo,lru,opt",
                    .layouts = "linear,block4,block8,morton"};
 };
 
@@ -37,9 +40,9 @@ Table grouping_table(const std::vector<TextureRun>& runs, const std::string& ras
                      ReplacementPolicy policy) {
   Table table;
   table.title = "Texture-grouped against strips (" + raster + ", " + layout + ", " + to_string(policy) + ")";
-  table.columns = {{"size_bytes", "cache size", 0},       {"strip_misses", "strip misses", 0},
+  table.columns = {{"size_bytes", "cache size", 0},           {"strip_misses", "strip misses", 0},
                    {"texgroup_misses", "texgroup misses", 0}, {"reduction", "reduction %", 1},
-                   {"strip_acmr", "strip vertex ACMR", 3}, {"texgroup_acmr", "texgroup vertex ACMR", 3}};
+                   {"strip_acmr", "strip vertex ACMR", 3},    {"texgroup_acmr", "texgroup vertex ACMR", 3}};
   const TextureRun* strip = nullptr;
   const TextureRun* grouped = nullptr;
   for (const TextureRun& run : runs) {
@@ -72,8 +75,7 @@ void run_report(const ReportCommand& command) {
      << "How the order in which triangles are drawn changes the traffic between the GPU and its memory:\n"
      << "the post-transform vertex cache under each ordering, then the texture cache under the orderings\n"
      << "of Yang, Mitra and Huang (strips against texture-grouped strips) and Sander et al.'s Tipsy.\n\n"
-     << "Reproduce with:\n\n```sh\nrastrace report " << command.scene << " -o " << command.output_dir
-     << "\n```\n\n";
+     << "Reproduce with:\n\n```sh\nrastrace report " << command.scene << " -o " << command.output_dir << "\n```\n\n";
 
   // 1. The vertex cache under each ordering.
   std::cerr << "report: vertex cache orderings\n";
@@ -100,8 +102,7 @@ void run_report(const ReportCommand& command) {
 
   md << "## Frames\n\n";
   for (const TextureRun& run : runs)
-    if (run.raster == "scanline")
-      md << "![" << run.order << "](" << fs::relative(run.image_path, dir).string() << ") ";
+    if (run.raster == "scanline") md << "![" << run.order << "](" << fs::relative(run.image_path, dir).string() << ") ";
   md << "\n\nOne frame per ordering (scanline traversal); the images are identical, the memory traffic is not.\n\n";
 
   // Plots: miss rate against size, a line per ordering and policy, per traversal and layout.
@@ -112,7 +113,8 @@ void run_report(const ReportCommand& command) {
         if (run.raster != raster) continue;
         for (const SweepRow& row : run.sweep.rows)
           if (row.layout == layout_name(layout))
-            series[run.order + " " + to_string(row.cache.policy)].emplace_back(row.cache.size_bytes, row.stats.miss_rate());
+            series[run.order + " " + to_string(row.cache.policy)].emplace_back(row.cache.size_bytes,
+                                                                               row.stats.miss_rate());
       }
       const std::string name = "texture-" + raster + "-" + layout_name(layout) + ".png";
       write_size_plot((dir / "plots" / name).string(),
@@ -123,7 +125,8 @@ void run_report(const ReportCommand& command) {
   }
   md << "\n";
   for (const LayoutSpec& layout : experiment.sweep.layouts)
-    md << render_table(grouping_table(runs, "scanline", layout_name(layout), ReplacementPolicy::Lru), TableFormat::Markdown)
+    md << render_table(grouping_table(runs, "scanline", layout_name(layout), ReplacementPolicy::Lru),
+                       TableFormat::Markdown)
        << "\n";
   md << render_table(texture_experiment_table(experiment, runs), TableFormat::Markdown) << "\n"
      << "Traces of every run are in `traces/`; `rastrace sweep traces/<order>-<raster>.rtrace` replays them "

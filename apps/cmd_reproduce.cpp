@@ -25,9 +25,11 @@ void run_reproduce(const ReproduceCommand& command) {
 }  // namespace
 
 void add_reproduce_command(CLI::App& app) {
-  CLI::App* sub = app.add_subcommand("reproduce", "Published figures of the papers beside rastrace's own, with the difference");
+  CLI::App* sub =
+      app.add_subcommand("reproduce", "Published figures of the papers beside rastrace's own, with the difference");
   auto command = std::make_shared<ReproduceCommand>();
-  sub->add_option("--paper", command->options.papers, "all, or a comma-separated list of castano, hoppe, yang, yang-texture, sander, forsyth")
+  sub->add_option("--paper", command->options.papers,
+                  "all, or a comma-separated list of castano, hoppe, yang, yang-texture, sander, forsyth")
       ->capture_default_str();
   sub->add_option("--local-iterations", command->options.local_iterations,
                   "Perturbation searches of Hoppe's local optimization")

@@ -13,7 +13,8 @@
 namespace rastrace {
 
 void add_sweep_command(CLI::App& app) {
-  CLI::App* command = app.add_subcommand("sweep", "Sweep cache sizes, lines, associativities, policies and layouts over a trace");
+  CLI::App* command =
+      app.add_subcommand("sweep", "Sweep cache sizes, lines, associativities, policies and layouts over a trace");
   struct Options {
     std::string trace, stride = "32B", source, entries, format = "md", output, plot;
     SweepFlags sweep;
@@ -21,13 +22,16 @@ void add_sweep_command(CLI::App& app) {
     bool keep_vertex_cache = false;
   };
   auto o = std::make_shared<Options>();
-  command->add_option("trace", o->trace, "Trace file: rastrace trace (.rtrace), .csv export or Dinero .din")->required();
+  command->add_option("trace", o->trace, "Trace file: rastrace trace (.rtrace), .csv export or Dinero .din")
+      ->required();
   add_sweep_flags(*command, o->sweep);
-  command->add_option("--source", o->source, "Accesses to simulate: texel, vertex (vertex buffer bytes) or address (din); "
-                                              "default: what the trace holds");
+  command->add_option("--source", o->source,
+                      "Accesses to simulate: texel, vertex (vertex buffer bytes) or address (din); "
+                      "default: what the trace holds");
   command->add_option("--stride", o->stride, "Vertex size in bytes for --source vertex")->capture_default_str();
-  command->add_option("--entries", o->entries, "Sweep post-transform vertex caches instead: entry counts, e.g. 4..64 "
-                                               "(policies fifo,lru)");
+  command->add_option("--entries", o->entries,
+                      "Sweep post-transform vertex caches instead: entry counts, e.g. 4..64 "
+                      "(policies fifo,lru)");
   command->add_option("--threads", o->threads, "Worker threads (0: one per core)")->capture_default_str();
   command->add_option("--format", o->format, "Table format: md, csv, latex or json")->capture_default_str();
   command->add_option("-o,--output", o->output, "Write the table to this file (atomically) instead of stdout");
@@ -51,7 +55,8 @@ void add_sweep_command(CLI::App& app) {
         entries.push_back(static_cast<unsigned>(k));
       }
       std::vector<VertexCachePolicy> policies;
-      for (const std::string& p : split_list(o->sweep.policies, "--policy")) policies.push_back(parse_vertex_cache_policy(p));
+      for (const std::string& p : split_list(o->sweep.policies, "--policy"))
+        policies.push_back(parse_vertex_cache_policy(p));
       const auto rows = run_vertex_sweep(o->trace, policies, entries, !o->keep_vertex_cache);
       parameters.emplace_back("vertex_cache_per_draw", o->keep_vertex_cache ? "kept" : "flushed");
       const Table table = vertex_cache_table("Post-transform vertex cache sweep", parameters, rows);
@@ -74,7 +79,8 @@ void add_sweep_command(CLI::App& app) {
     parameters.emplace_back("random_seed", spec.seed);
     const std::string title = "Cache sweep over " + std::string(to_string(spec.source)) + " accesses";
     const Table table = byte_cache_table(title, parameters, result.rows, to_string(spec.source));
-    if (!o->plot.empty()) write_miss_rate_plot(o->plot, title + ": " + std::filesystem::path(o->trace).filename().string(), result.rows);
+    if (!o->plot.empty())
+      write_miss_rate_plot(o->plot, title + ": " + std::filesystem::path(o->trace).filename().string(), result.rows);
     write_output(o->output, render_table(table, table_format));
   });
 }

@@ -9,7 +9,6 @@
 #include <memory>
 #include <set>
 
-
 #include "apps/cache_report.h"
 #include "apps/commands.h"
 #include "apps/sweep_flags.h"
@@ -31,8 +30,10 @@ struct ExperimentPreset {
 
 const std::vector<ExperimentPreset>& experiment_presets() {
   static const std::vector<ExperimentPreset> presets = {
-      {"fig6", "Texture miss rate against cache size (Yang et al., Figure 6)", "builtin:bunny", "strip,greedy,tipsy", "lru"},
-      {"fig7", "FIFO against LRU, OPT the lower bound (Yang et al., Figure 7)", "builtin:bunny", "strip", "fifo,lru,opt"},
+      {"fig6", "Texture miss rate against cache size (Yang et al., Figure 6)", "builtin:bunny", "strip,greedy,tipsy",
+       "lru"},
+      {"fig7", "FIFO against LRU, OPT the lower bound (Yang et al., Figure 7)", "builtin:bunny", "strip",
+       "fifo,lru,opt"},
       {"fig9", "Texture-grouped against strips, one component with the four-colour texture (Yang et al., Figure 9)",
        "builtin:bunny", "strip,texgroup", "lru"},
       {"fig11", "Texture-grouped against strips, a model of separate components (Yang et al., Figure 11)",
@@ -59,7 +60,10 @@ struct TexsweepCommand {
   std::string filter = "trilinear";
   std::string wrap = "repeat";
   std::string cull = "back";
-  SweepFlags sweep{.sizes = "1KiB..64KiB", .lines = "64B", .assocs = "full", .policies = "fifo,lru,opt",
+  SweepFlags sweep{.sizes = "1KiB..64KiB",
+                   .lines = "64B",
+                   .assocs = "full",
+                   .policies = "fifo,lru,opt",
                    .layouts = "linear,block4,block8,morton"};
   std::string format = "md";
   std::string output;
@@ -77,7 +81,8 @@ void write_plots(const std::string& dir, const std::string& stem, const std::str
     for (const SweepRow& row : run.sweep.rows) {
       const std::string key = run.raster + "-" + row.layout + "-" + format_byte_size(row.cache.line_bytes) + "-" +
                               (row.cache.assoc == 0 ? std::string("full") : std::to_string(row.cache.assoc) + "way");
-      plots[key][run.order + " " + to_string(row.cache.policy)].emplace_back(row.cache.size_bytes, row.stats.miss_rate());
+      plots[key][run.order + " " + to_string(row.cache.policy)].emplace_back(row.cache.size_bytes,
+                                                                             row.stats.miss_rate());
     }
   }
   for (auto& [key, series] : plots)
@@ -126,21 +131,24 @@ void add_texsweep_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "texsweep", "Render each triangle ordering, record its texel trace, sweep texture caches (Yang et al.)");
   auto c = std::make_shared<TexsweepCommand>();
-  command->add_option("scene", c->scene, "Scene: builtin:bunny|spider|grid, a JSON scene or a mesh file "
-                                         "(default: the experiment's)");
+  command->add_option("scene", c->scene,
+                      "Scene: builtin:bunny|spider|grid, a JSON scene or a mesh file "
+                      "(default: the experiment's)");
   command->add_option("--experiment", c->experiment,
                       "A figure of Yang et al.: fig6 (miss rate against size), fig7 (FIFO against LRU), "
                       "fig9 (texgroup against strips, bunny), fig11 (texgroup against strips, spider)");
   command->add_option("--order", c->orders, "Triangle orderings to compare (rastrace reorder --help lists them)")
       ->capture_default_str();
-  command->add_option("--raster", c->rasters, "Traversal orders inside triangles: scanline, tiled8")->capture_default_str();
+  command->add_option("--raster", c->rasters, "Traversal orders inside triangles: scanline, tiled8")
+      ->capture_default_str();
   command->add_option("--base", c->base, "texgroup: the algorithm ordering each group (strip, greedy, tipsy, ...)")
       ->capture_default_str();
   command->add_option("--regions", c->regions, "texgroup: auto, quadrant, chart or texture")->capture_default_str();
   command->add_option("--vcache", c->vcache, "Post-transform cache the orderings target and ACMR is measured on")
       ->capture_default_str();
   command->add_option("--resolution", c->resolution, "Image size WxH (default: the scene's)");
-  command->add_option("--filter", c->filter, "nearest, linear, nearest_mipmap_nearest, linear_mipmap_nearest, trilinear")
+  command
+      ->add_option("--filter", c->filter, "nearest, linear, nearest_mipmap_nearest, linear_mipmap_nearest, trilinear")
       ->capture_default_str();
   command->add_option("--wrap", c->wrap, "repeat or clamp_to_edge")->capture_default_str();
   command->add_option("--cull", c->cull, "Face culling: none, back or front")->capture_default_str();
@@ -148,7 +156,8 @@ void add_texsweep_command(CLI::App& app) {
   command->add_option("--format", c->format, "Table format: md, csv, latex or json")->capture_default_str();
   command->add_option("-o,--output", c->output, "Write the table to this file (atomically) instead of stdout");
   command->add_option("--plot", c->plot_dir, "Draw miss rate against cache size into this folder (PNG, gnuplot)");
-  command->add_option("--traces", c->trace_dir, "Keep the texel traces in this folder (rastrace replay/sweep read them)");
+  command->add_option("--traces", c->trace_dir,
+                      "Keep the texel traces in this folder (rastrace replay/sweep read them)");
   command->add_option("--images", c->image_dir, "Write each run's frame into this folder");
   command->footer(
       "Examples:\n"

@@ -30,12 +30,17 @@ void add_trace_command(CLI::App& app) {
     const TraceMetadata& m = reader.metadata();
     Table t;
     t.title = "Trace " + std::filesystem::path(*info_path).filename().string();
-    t.parameters = {{"scene", m.scene}, {"ordering", m.ordering},
+    t.parameters = {{"scene", m.scene},
+                    {"ordering", m.ordering},
                     {"resolution", std::to_string(m.width) + "x" + std::to_string(m.height)},
-                    {"filter", m.filter}, {"tool_version", m.tool_version},
+                    {"filter", m.filter},
+                    {"tool_version", m.tool_version},
                     {"textures", static_cast<std::int64_t>(m.textures.size())}};
-    t.columns = {{"kind", "records of kind", 0}, {"records", "records", 0}, {"chunks", "chunks", 0},
-                 {"bytes", "bytes on disk", 0}, {"bytes_per_record", "bytes/record", 3}};
+    t.columns = {{"kind", "records of kind", 0},
+                 {"records", "records", 0},
+                 {"chunks", "chunks", 0},
+                 {"bytes", "bytes on disk", 0},
+                 {"bytes_per_record", "bytes/record", 3}};
     // A chunk's bytes: up to the next chunk, the last one up to the index.
     std::uint64_t index_offset = reader.file_bytes();
     {
@@ -55,8 +60,8 @@ void add_trace_command(CLI::App& app) {
       const std::uint64_t records = reader.records(kind);
       t.add_row({to_string(kind), records, chunks, bytes, records ? double(bytes) / double(records) : 0.0});
     }
-    const std::uint64_t records = reader.records(RecordKind::Vertex) + reader.records(RecordKind::Texel) +
-                                  reader.records(RecordKind::Address);
+    const std::uint64_t records =
+        reader.records(RecordKind::Vertex) + reader.records(RecordKind::Texel) + reader.records(RecordKind::Address);
     t.parameters.emplace_back("file_bytes", reader.file_bytes());
     t.parameters.emplace_back("bytes_per_record", records ? double(reader.file_bytes()) / double(records) : 0.0);
     std::cout << render_table(t, parse_table_format(*info_format));
@@ -78,7 +83,8 @@ void add_trace_command(CLI::App& app) {
     if (extension == ".csv") {
       if (summary.format == TraceFileFormat::Container) {
         TraceReader reader(*in);
-        write_file_atomically(*out, [&](std::ostream& o) { export_csv(reader, o); }, false);
+        write_file_atomically(
+            *out, [&](std::ostream& o) { export_csv(reader, o); }, false);
       } else {
         // Through a temporary container: CSV export reads containers.
         const std::string temporary = *out + ".rtrace.tmp";
@@ -87,7 +93,8 @@ void add_trace_command(CLI::App& app) {
           replay_file(*in, writer);
         }
         TraceReader reader(temporary);
-        write_file_atomically(*out, [&](std::ostream& o) { export_csv(reader, o); }, false);
+        write_file_atomically(
+            *out, [&](std::ostream& o) { export_csv(reader, o); }, false);
         std::filesystem::remove(temporary);
       }
     } else if (extension == ".rtrace") {

@@ -1,5 +1,6 @@
 // `rastrace vcache MESH --algo all|a,b,c --cache 8,12,16,20,24,32 --policy fifo,lru [--target K]
-//  --format md|csv|latex|json [--no-time] [--accounting misses|evictions]`: the post-transform vertex cache under every ordering.
+//  --format md|csv|latex|json [--no-time] [--accounting misses|evictions]`: the post-transform vertex cache under every
+//  ordering.
 // One row per algorithm, policy and cache size: ACMR, ATVR, misses, indices per triangle, Hoppe's
 // bandwidth (ACMR * 32 + indices per triangle * 2 bytes per triangle) and the ordering's run time.
 // An algorithm orders for the simulated cache unless --target fixes the size it orders for.
@@ -58,14 +59,16 @@ void add_vcache_command(CLI::App& app) {
       ->delimiter(',')
       ->capture_default_str();
   command->add_option("--policy", options->policies, "fifo, lru, or both")->delimiter(',')->capture_default_str();
-  command->add_option("--target", options->target, "Cache size the orderings optimize for (default: the simulated size)");
+  command->add_option("--target", options->target,
+                      "Cache size the orderings optimize for (default: the simulated size)");
   command->add_option("--seed", options->seed, "Seed of the randomized orderings")->capture_default_str();
   command->add_option("--time-budget", options->time_budget, "Seconds for iterative orderings (local)")
       ->capture_default_str();
   command->add_option("--format", options->format, "md, csv, latex or json")->capture_default_str();
-  command->add_option("--accounting", options->accounting,
-                      "misses (true FIFO/LRU misses) or evictions (transforms as NVIDIA Mesh Tools charged "
-                      "them, as in Castano's grid tables; FIFO only)")
+  command
+      ->add_option("--accounting", options->accounting,
+                   "misses (true FIFO/LRU misses) or evictions (transforms as NVIDIA Mesh Tools charged "
+                   "them, as in Castano's grid tables; FIFO only)")
       ->capture_default_str();
   command->add_flag("--no-time", options->no_time, "Leave out the run-time column so outputs compare byte for byte");
   command->footer(

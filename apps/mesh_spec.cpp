@@ -31,8 +31,10 @@ Mesh merge_objects(const Scene& scene) {
     merged.positions.insert(merged.positions.end(), m.positions.begin(), m.positions.end());
     for (const std::uint32_t i : m.indices) merged.indices.push_back(base + i);
     for (std::size_t f = 0; f < m.face_count(); ++f) merged.face_material.push_back(material_base + m.material_of(f));
-    if (m.materials.empty()) merged.materials.emplace_back();
-    else merged.materials.insert(merged.materials.end(), m.materials.begin(), m.materials.end());
+    if (m.materials.empty())
+      merged.materials.emplace_back();
+    else
+      merged.materials.insert(merged.materials.end(), m.materials.begin(), m.materials.end());
   }
   return merged;
 }
@@ -43,8 +45,7 @@ Mesh load_mesh_spec(const std::string& spec) {
   if (spec.rfind("grid:", 0) == 0) {
     const std::string_view shape = std::string_view(spec).substr(5);
     const std::size_t x = shape.find('x');
-    if (x == std::string_view::npos)
-      throw InputError("mesh '" + spec + "': expected grid:WxH, for example grid:16x16");
+    if (x == std::string_view::npos) throw InputError("mesh '" + spec + "': expected grid:WxH, for example grid:16x16");
     return make_grid(parse_grid_side(spec, shape.substr(0, x)), parse_grid_side(spec, shape.substr(x + 1)));
   }
   if (spec.rfind("builtin:", 0) == 0) return merge_objects(load_scene(spec));

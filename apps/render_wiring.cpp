@@ -14,11 +14,12 @@ namespace rastrace {
 void add_scene_render_flags(CLI::App& command, SceneRenderFlags& flags) {
   command.add_option("scene", flags.scene, "Scene: builtin:grid|bunny|spider, a JSON scene or a mesh file")->required();
   command.add_option("--size", flags.size, "Image size WxH (default: the scene's)");
-  command.add_option("--filter", flags.filter,
-                     "nearest, linear, nearest_mipmap_nearest, linear_mipmap_nearest, trilinear")
+  command
+      .add_option("--filter", flags.filter, "nearest, linear, nearest_mipmap_nearest, linear_mipmap_nearest, trilinear")
       ->capture_default_str();
   command.add_option("--wrap", flags.wrap, "repeat or clamp_to_edge")->capture_default_str();
-  command.add_option("--raster", flags.raster, "Traversal inside a triangle: scanline or tiled8")->capture_default_str();
+  command.add_option("--raster", flags.raster, "Traversal inside a triangle: scanline or tiled8")
+      ->capture_default_str();
   command.add_option("--cull", flags.cull, "Face culling: none, back or front")->capture_default_str();
   command.add_flag("--lighting", flags.lighting, "Gouraud lighting with one directional light");
   command.add_option("--order", flags.order, "Triangle ordering (rastrace reorder --help lists them)")
@@ -46,9 +47,12 @@ RenderOptions render_options_from(const SceneRenderFlags& flags) {
   SamplerState& sampler = options.pipeline.raster.sampler;
   sampler = parse_filter(flags.filter);
   sampler.wrap_s = sampler.wrap_t = parse_wrap(flags.wrap);
-  if (flags.lod == "lengths") sampler.lod = LodFormula::Lengths;
-  else if (flags.lod == "max_component") sampler.lod = LodFormula::MaxComponent;
-  else throw InputError("--lod '" + flags.lod + "': expected lengths or max_component");
+  if (flags.lod == "lengths")
+    sampler.lod = LodFormula::Lengths;
+  else if (flags.lod == "max_component")
+    sampler.lod = LodFormula::MaxComponent;
+  else
+    throw InputError("--lod '" + flags.lod + "': expected lengths or max_component");
   options.pipeline.raster.traversal = parse_traversal(flags.raster);
   options.pipeline.cull = parse_cull_mode(flags.cull);
   options.pipeline.lighting.enabled = flags.lighting;
@@ -68,7 +72,8 @@ OrderedDraws order_scene(const Scene& scene, const std::string& order, const Reo
     Ordering ordering = algorithm.run(mesh, params);
     out.draws[o].type = ordering.type;
     out.draws[o].restart_index = ordering.restart_index;
-    if (mesh.materials.size() > 1 && !mesh.face_material.empty()) out.materials[o] = primitive_materials(mesh, ordering);
+    if (mesh.materials.size() > 1 && !mesh.face_material.empty())
+      out.materials[o] = primitive_materials(mesh, ordering);
     out.indices[o] = std::move(ordering.indices);
     out.draws[o].indices = out.indices[o];
     out.draws[o].primitive_materials = out.materials[o];
@@ -78,13 +83,11 @@ OrderedDraws order_scene(const Scene& scene, const std::string& order, const Reo
 
 VertexCacheSpec parse_vcache_spec(const std::string& text) {
   const std::size_t colon = text.find(':');
-  if (colon == std::string::npos)
-    throw InputError("--vcache '" + text + "': expected POLICY:ENTRIES, e.g. fifo:16");
+  if (colon == std::string::npos) throw InputError("--vcache '" + text + "': expected POLICY:ENTRIES, e.g. fifo:16");
   VertexCacheSpec spec;
   spec.policy = parse_vertex_cache_policy(text.substr(0, colon));
   const std::uint64_t entries = parse_count(text.substr(colon + 1), "--vcache");
-  if (entries < 1 || entries > 65536)
-    throw InputError("--vcache '" + text + "': expected 1..65536 entries");
+  if (entries < 1 || entries > 65536) throw InputError("--vcache '" + text + "': expected 1..65536 entries");
   spec.entries = static_cast<unsigned>(entries);
   return spec;
 }
@@ -99,11 +102,14 @@ CacheConfig parse_tcache_spec(const std::string& text) {
   if (line > 0xFFFFFFFFull) throw InputError("--tcache '" + text + "': line size too large");
   config.line_bytes = static_cast<std::uint32_t>(line);
   const std::string& assoc = items[2];
-  if (assoc == "full") config.assoc = 0;
-  else if (assoc == "direct") config.assoc = 1;
+  if (assoc == "full")
+    config.assoc = 0;
+  else if (assoc == "direct")
+    config.assoc = 1;
   else if (assoc.size() > 3 && assoc.ends_with("way"))
     config.assoc = static_cast<std::uint32_t>(parse_count(assoc.substr(0, assoc.size() - 3), "--tcache associativity"));
-  else throw InputError("--tcache '" + text + "': associativity '" + assoc + "': expected Nway, direct or full");
+  else
+    throw InputError("--tcache '" + text + "': associativity '" + assoc + "': expected Nway, direct or full");
   config.policy = parse_replacement_policy(items[3]);
   validate(config);
   return config;

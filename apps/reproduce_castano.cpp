@@ -79,8 +79,8 @@ std::vector<ReproducedFigure> reproduce_castano() {
   unsigned minimum = 0;
   for (unsigned cache = 3; cache <= 40 && !minimum; ++cache)
     if (run(grid, "grid", cache, cache).strict == 289) minimum = cache;
-  figures.push_back({paper, "Smallest FIFO with ATVR 1 (W + 2)", paper_mesh, our_mesh, std::int64_t{18},
-                     std::int64_t{minimum}, ""});
+  figures.push_back(
+      {paper, "Smallest FIFO with ATVR 1 (W + 2)", paper_mesh, our_mesh, std::int64_t{18}, std::int64_t{minimum}, ""});
   return figures;
 }
 

@@ -23,7 +23,8 @@ std::vector<ReproducedFigure> reproduce_forsyth() {
   }
   const std::string tipsy = "Sander et al. 2007";
   for (const auto& [method, acmr] : {std::pair{"K-Cache-Reorder", 0.63}, {"Hoppe", 0.65}, {"Tipsy", 0.69}})
-    figures.push_back({tipsy, std::string("dragon: ") + method + " ACMR", "dragon (40k t)", "", acmr, {}, "no such mesh"});
+    figures.push_back(
+        {tipsy, std::string("dragon: ") + method + " ACMR", "dragon (40k t)", "", acmr, {}, "no such mesh"});
   return figures;
 }
 

@@ -52,7 +52,8 @@ std::vector<ReproducedFigure> reproduce_hoppe(const ReproduceOptions& options) {
   const Row rows[] = {
       {"grid20", "grid20 (391 v, 704 f)", "grid:16x22", 0.62, 0.60, 1.11, 1.07,
        "ours: the 16x22 quad grid with the same 391 vertices and 704 faces"},
-      {"grid40", "grid40 (1,075 v, 1,999 f)", "", 0.67, 0.63, 1.25, 1.17, "no such mesh: 1,999 faces is not a full grid"},
+      {"grid40", "grid40 (1,075 v, 1,999 f)", "", 0.67, 0.63, 1.25, 1.17,
+       "no such mesh: 1,999 faces is not a full grid"},
       {"fandisk", "fandisk (7,233 v, 12,946 f)", "fandisk.off", 0.61, 0.60, 1.09, 1.08,
        "CGAL's copy: same faces, 6,475 vertices (not split at creases)"},
       {"bunny", "bunny (34,835 v, 69,473 f)", "bunny00.off", 0.64, 0.62, 1.28, 1.24,
@@ -72,15 +73,16 @@ std::vector<ReproducedFigure> reproduce_hoppe(const ReproduceOptions& options) {
     const VertexStreamStats local = fifo16(mesh, "local", options.local_iterations);
     const std::string local_note =
         std::string(row.note) + "; local: " + std::to_string(options.local_iterations) + " perturbation searches";
-    figures.push_back({paper, figure + "r greedy", row.paper_mesh, row.our_mesh, row.r_greedy, greedy.acmr(), row.note});
+    figures.push_back(
+        {paper, figure + "r greedy", row.paper_mesh, row.our_mesh, row.r_greedy, greedy.acmr(), row.note});
     figures.push_back({paper, figure + "r local", row.paper_mesh, row.our_mesh, row.r_local, local.acmr(), local_note});
     figures.push_back(
         {paper, figure + "misses/vertex greedy", row.paper_mesh, row.our_mesh, row.v_greedy, greedy.atvr(), row.note});
     figures.push_back(
         {paper, figure + "misses/vertex local", row.paper_mesh, row.our_mesh, row.v_local, local.atvr(), local_note});
   }
-  figures.push_back({paper, "FIFO anomaly: misses at 5 entries / at 4", "6,1,7,2,4,6,(1..7)*", "the same sequence",
-                     2.0, anomaly_ratio(), ""});
+  figures.push_back({paper, "FIFO anomaly: misses at 5 entries / at 4", "6,1,7,2,4,6,(1..7)*", "the same sequence", 2.0,
+                     anomaly_ratio(), ""});
   return figures;
 }
 

@@ -47,19 +47,29 @@ Table reproduction_table(const ReproduceOptions& options) {
   for (std::string name; std::getline(list, name, ',');) {
     bool known = name == "all";
     for (const auto& [paper, run] : papers) known |= name == paper;
-    if (!known) throw InputError("--paper '" + name + "': expected all, castano, hoppe, yang, yang-texture, sander or forsyth");
+    if (!known)
+      throw InputError("--paper '" + name + "': expected all, castano, hoppe, yang, yang-texture, sander or forsyth");
     wanted.push_back(name);
   }
-  if (wanted.empty()) throw InputError("--paper '': expected all, castano, hoppe, yang, yang-texture, sander or forsyth");
+  if (wanted.empty())
+    throw InputError("--paper '': expected all, castano, hoppe, yang, yang-texture, sander or forsyth");
 
   Table table;
   table.title = "Published figures (REFERENCE.md) and rastrace's";
-  table.parameters = {{"papers", options.papers},
-                      {"local_iterations", static_cast<std::int64_t>(options.local_iterations)},
-                      {"difference", "ours rounded as printf rounds (3 decimals, ties to even), minus published; and in percent of published"}};
-  table.columns = {{"paper", "paper", 0},       {"figure", "figure", 0},          {"paper_mesh", "paper's mesh", 0},
-                   {"our_mesh", "our mesh", 0}, {"published", "published", 3},    {"ours", "ours", 3},
-                   {"difference", "difference", 3}, {"difference_percent", "difference %", 1}, {"note", "note", 0}};
+  table.parameters = {
+      {"papers", options.papers},
+      {"local_iterations", static_cast<std::int64_t>(options.local_iterations)},
+      {"difference",
+       "ours rounded as printf rounds (3 decimals, ties to even), minus published; and in percent of published"}};
+  table.columns = {{"paper", "paper", 0},
+                   {"figure", "figure", 0},
+                   {"paper_mesh", "paper's mesh", 0},
+                   {"our_mesh", "our mesh", 0},
+                   {"published", "published", 3},
+                   {"ours", "ours", 3},
+                   {"difference", "difference", 3},
+                   {"difference_percent", "difference %", 1},
+                   {"note", "note", 0}};
   for (const auto& [paper, run] : papers) {
     if (std::find(wanted.begin(), wanted.end(), "all") == wanted.end() &&
         std::find(wanted.begin(), wanted.end(), paper) == wanted.end())

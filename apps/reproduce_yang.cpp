@@ -33,8 +33,8 @@ std::vector<ReproducedFigure> reproduce_yang() {
     const Mesh mesh = load_mesh(cgal_mesh_path(row.our_mesh));
     const Ordering ordering = find_reorder_algorithm("strip").run(mesh, ReorderParams{});
     const StripStats stats = strip_stats(ordering.indices, ordering.type, ordering.restart_index);
-    figures.push_back({paper, figure, row.paper_mesh, row.our_mesh, row.cost, static_cast<std::int64_t>(stats.vertices_sent),
-                       "the same model; ours: rastrace's strip"});
+    figures.push_back({paper, figure, row.paper_mesh, row.our_mesh, row.cost,
+                       static_cast<std::int64_t>(stats.vertices_sent), "the same model; ours: rastrace's strip"});
   }
   return figures;
 }

@@ -20,7 +20,8 @@ namespace rastrace {
 namespace {
 
 struct Misses {
-  std::map<std::pair<std::string, ReplacementPolicy>, std::map<std::uint64_t, std::uint64_t>> by_order;  // size -> misses
+  std::map<std::pair<std::string, ReplacementPolicy>, std::map<std::uint64_t, std::uint64_t>>
+      by_order;  // size -> misses
   std::map<std::string, double> acmr;
 };
 
@@ -31,8 +32,8 @@ Misses run_experiment(const std::string& scene, const std::string& policies) {
   experiment.orders = {"strip", "texgroup"};
   experiment.rasters = {"scanline"};
   experiment.vertex_cache = parse_vcache_spec("fifo:16");
-  experiment.sweep = sweep_spec_from(SweepFlags{.sizes = "1KiB..16KiB", .lines = "64B", .assocs = "full",
-                                                .policies = policies, .layouts = "linear"});
+  experiment.sweep = sweep_spec_from(
+      SweepFlags{.sizes = "1KiB..16KiB", .lines = "64B", .assocs = "full", .policies = policies, .layouts = "linear"});
   Misses misses;
   for (const TextureRun& run : run_texture_experiment(experiment)) {
     misses.acmr[run.order] = run.vertex.acmr();
@@ -43,8 +44,8 @@ Misses run_experiment(const std::string& scene, const std::string& policies) {
 }
 
 // Mean over the sizes up to `largest` of 100 * (more - fewer) / divisor, divisor `more` or `fewer`.
-double mean_percent(const std::map<std::uint64_t, std::uint64_t>& more, const std::map<std::uint64_t, std::uint64_t>& fewer,
-                    std::uint64_t largest, bool of_more) {
+double mean_percent(const std::map<std::uint64_t, std::uint64_t>& more,
+                    const std::map<std::uint64_t, std::uint64_t>& fewer, std::uint64_t largest, bool of_more) {
   double sum = 0.0;
   int count = 0;
   for (const auto& [size, m] : more) {
@@ -74,11 +75,11 @@ std::vector<ReproducedFigure> reproduce_yang_texture() {
        "bunny, four-colour texture", bunny_mesh, 12.5,
        mean_percent(bunny.by_order.at(strip_lru), bunny.by_order.at(grouped_lru), k16, true), "paper: 10-15% fewer"},
       {paper, "single component: texgroup's extra vertex-cache ACMR over strips, % (FIFO 16)",
-       "bunny, four-colour texture", bunny_mesh, 1.0, 100.0 * (bunny.acmr.at("texgroup") / bunny.acmr.at("strip") - 1.0),
-       "paper: about 1%"},
-      {paper, "LRU's fewer texture misses than FIFO below 16 KB, % (strips, 1-8 KiB mean)", "bunny, four-colour texture",
-       bunny_mesh, 5.0, mean_percent(bunny.by_order.at(strip_fifo), bunny.by_order.at(strip_lru), k8, true),
-       "paper: about 5%"},
+       "bunny, four-colour texture", bunny_mesh, 1.0,
+       100.0 * (bunny.acmr.at("texgroup") / bunny.acmr.at("strip") - 1.0), "paper: about 1%"},
+      {paper, "LRU's fewer texture misses than FIFO below 16 KB, % (strips, 1-8 KiB mean)",
+       "bunny, four-colour texture", bunny_mesh, 5.0,
+       mean_percent(bunny.by_order.at(strip_fifo), bunny.by_order.at(strip_lru), k8, true), "paper: about 5%"},
       {paper, "separate components: strips' extra texture misses over texgroup, % (LRU, 1-16 KiB mean)",
        "a multi-component model", "builtin:spider (5 textures)", 200.0,
        mean_percent(spider.by_order.at(strip_lru), spider.by_order.at(grouped_lru), k16, false),

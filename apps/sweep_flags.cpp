@@ -8,11 +8,14 @@
 namespace rastrace {
 
 void add_sweep_flags(CLI::App& command, SweepFlags& flags) {
-  command.add_option("--size", flags.sizes, "Cache sizes: list and/or power-of-two ranges, e.g. 1KiB..64KiB")->capture_default_str();
+  command.add_option("--size", flags.sizes, "Cache sizes: list and/or power-of-two ranges, e.g. 1KiB..64KiB")
+      ->capture_default_str();
   command.add_option("--line", flags.lines, "Line sizes, e.g. 32B,64B,128B")->capture_default_str();
-  command.add_option("--assoc", flags.assocs, "Associativities: numbers and/or 'full', e.g. 1,2,4,full")->capture_default_str();
+  command.add_option("--assoc", flags.assocs, "Associativities: numbers and/or 'full', e.g. 1,2,4,full")
+      ->capture_default_str();
   command.add_option("--policy", flags.policies, "Replacement policies: fifo,lru,random,opt")->capture_default_str();
-  command.add_option("--layout", flags.layouts, "Texture layouts: linear,block2,block4,block8,block16,morton")->capture_default_str();
+  command.add_option("--layout", flags.layouts, "Texture layouts: linear,block2,block4,block8,block16,morton")
+      ->capture_default_str();
   command.add_option("--texel", flags.texel, "Texel size in bytes")->capture_default_str();
   command.add_option("--align", flags.align, "Alignment of every texture level's base")->capture_default_str();
   command.add_option("--seed", flags.seed, "Seed of the random policy")->capture_default_str();
@@ -38,7 +41,8 @@ SweepSpec sweep_spec_from(const SweepFlags& flags) {
     }
   }
   spec.policies.clear();
-  for (const std::string& p : split_list(flags.policies, "--policy")) spec.policies.push_back(parse_replacement_policy(p));
+  for (const std::string& p : split_list(flags.policies, "--policy"))
+    spec.policies.push_back(parse_replacement_policy(p));
   spec.layouts.clear();
   const std::uint64_t texel = parse_byte_size(flags.texel, "--texel");
   const std::uint64_t align = parse_byte_size(flags.align, "--align");

@@ -31,7 +31,8 @@ VertexStreamStats vertex_stats(const Scene& scene, const OrderedDraws& ordered, 
                                                cache.entries));
     } else {
       const DrawCall& draw = ordered.draws[o];
-      accumulate(total, simulate_vertex_stream(draw.indices, draw.type, cache.policy, cache.entries, draw.restart_index));
+      accumulate(total,
+                 simulate_vertex_stream(draw.indices, draw.type, cache.policy, cache.entries, draw.restart_index));
     }
   }
   return total;
@@ -45,12 +46,14 @@ std::vector<TextureRun> run_texture_experiment(const TextureExperiment& experime
   SceneRenderFlags flags = experiment.render;
   const Scene scene = load_render_scene(flags);
   const TextureLevels levels = texture_levels(scene);
-  if (levels.empty()) throw InputError(flags.scene + ": the scene has no texture, so there is no texture cache to measure");
+  if (levels.empty())
+    throw InputError(flags.scene + ": the scene has no texture, so there is no texture cache to measure");
   // Without a trace folder the traces live only as long as their sweeps: a private temporary one.
   const bool keep_traces = !experiment.trace_dir.empty();
   const std::string trace_dir =
-      keep_traces ? experiment.trace_dir
-                  : (std::filesystem::temp_directory_path() / ("rastrace-traces-" + std::to_string(::getpid()))).string();
+      keep_traces
+          ? experiment.trace_dir
+          : (std::filesystem::temp_directory_path() / ("rastrace-traces-" + std::to_string(::getpid()))).string();
   struct RemoveTemporary {
     std::string dir;
     ~RemoveTemporary() {
@@ -92,7 +95,8 @@ std::vector<TextureRun> run_texture_experiment(const TextureExperiment& experime
       metadata.textures = levels;
       metadata.extra = {{"raster", raster}, {"wrap", flags.wrap}};
       if (order == "texgroup")
-        metadata.extra.insert({{"texgroup_base", experiment.texgroup_base}, {"texgroup_regions", experiment.texgroup_regions}});
+        metadata.extra.insert(
+            {{"texgroup_base", experiment.texgroup_base}, {"texgroup_regions", experiment.texgroup_regions}});
       TraceWriter writer(run.trace_path, metadata);
       const RenderResult result = render_scene(scene, options, &writer);  // finishes the writer
       run.fragments = result.raster.fragments;
@@ -117,22 +121,28 @@ Table texture_experiment_table(const TextureExperiment& experiment, const std::v
       {"filter", experiment.render.filter},
       {"wrap", experiment.render.wrap},
       {"cull", experiment.render.cull},
-      {"vertex_cache", std::string(to_string(experiment.vertex_cache.policy)) + ":" +
-                           std::to_string(experiment.vertex_cache.entries)},
+      {"vertex_cache",
+       std::string(to_string(experiment.vertex_cache.policy)) + ":" + std::to_string(experiment.vertex_cache.entries)},
       {"texgroup_base", experiment.texgroup_base},
       {"texgroup_regions", experiment.texgroup_regions},
       {"texel_bytes", experiment.sweep.layouts.empty() ? 4u : experiment.sweep.layouts.front().texel_bytes},
   };
   if (!experiment.render.size.empty()) table.parameters.emplace_back("size", experiment.render.size);
-  table.columns = {{"order", "order", 0},          {"raster", "raster", 0},   {"size_bytes", "size", 0},
-                   {"line_bytes", "line", 0},      {"assoc", "assoc", 0},     {"policy", "policy", 0},
-                   {"layout", "layout", 0},        {"accesses", "accesses", 0}, {"misses", "misses", 0},
-                   {"miss_rate", "miss rate", 4},  {"bytes_per_fragment", "bytes/fragment", 2},
+  table.columns = {{"order", "order", 0},
+                   {"raster", "raster", 0},
+                   {"size_bytes", "size", 0},
+                   {"line_bytes", "line", 0},
+                   {"assoc", "assoc", 0},
+                   {"policy", "policy", 0},
+                   {"layout", "layout", 0},
+                   {"accesses", "accesses", 0},
+                   {"misses", "misses", 0},
+                   {"miss_rate", "miss rate", 4},
+                   {"bytes_per_fragment", "bytes/fragment", 2},
                    {"vertex_acmr", "vertex ACMR", 3}};
   for (const TextureRun& run : runs) {
     for (const SweepRow& row : run.sweep.rows) {
-      const double per_fragment =
-          run.fragments ? double(row.stats.bytes_fetched) / double(run.fragments) : 0.0;
+      const double per_fragment = run.fragments ? double(row.stats.bytes_fetched) / double(run.fragments) : 0.0;
       table.add_row({run.order, run.raster, row.cache.size_bytes, row.cache.line_bytes, row.cache.assoc,
                      to_string(row.cache.policy), row.layout, row.stats.accesses, row.stats.misses,
                      row.stats.miss_rate(), per_fragment, run.vertex.acmr()});

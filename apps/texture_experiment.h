@@ -18,17 +18,17 @@
 namespace rastrace {
 
 struct TextureExperiment {
-  std::string title;                       // the table's title
-  SceneRenderFlags render;                 // scene, size, filter, wrap, culling (raster, order: per run)
+  std::string title;        // the table's title
+  SceneRenderFlags render;  // scene, size, filter, wrap, culling (raster, order: per run)
   std::vector<std::string> orders{"strip", "texgroup"};
   std::vector<std::string> rasters{"scanline"};
   std::string texgroup_base = "strip";
   std::string texgroup_regions = "auto";
-  VertexCacheSpec vertex_cache;            // the post-transform cache orderings target and ACMR uses
+  VertexCacheSpec vertex_cache;  // the post-transform cache orderings target and ACMR uses
   SweepSpec sweep;
-  std::string trace_dir;                   // where the traces are kept; empty: a private temporary
-                                           // folder, removed before returning (trace_path empty)
-  std::string image_dir;                   // empty: no images; else <order>-<raster>.png
+  std::string trace_dir;  // where the traces are kept; empty: a private temporary
+                          // folder, removed before returning (trace_path empty)
+  std::string image_dir;  // empty: no images; else <order>-<raster>.png
 };
 
 struct TextureRun {
@@ -36,7 +36,7 @@ struct TextureRun {
   std::string raster;
   std::string trace_path;
   std::string image_path;
-  VertexStreamStats vertex;   // the ordering's own index stream through the vertex cache
+  VertexStreamStats vertex;  // the ordering's own index stream through the vertex cache
   std::uint64_t fragments = 0;
   std::uint64_t texel_accesses = 0;
   SweepResult sweep;

@@ -49,11 +49,16 @@ Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheT
                       {"bandwidth_formula", "acmr * 32 + indices_per_triangle * 2 bytes/triangle"},
                       {"accounting", spec.eviction_charged ? "evictions (NVIDIA Mesh Tools)" : "misses"}};
   if (spec.iteration_budget) table.parameters.emplace_back("local_iterations", spec.iteration_budget);
-  table.columns = {{"algo", "algorithm", 0},         {"policy", "policy", 0},
-                   {"cache", "cache", 0},            {"target", "target", 0},
-                   {"triangles", "triangles", 0},    {"vertices", "vertices", 0},
-                   {"misses", "misses", 0},          {"acmr", "ACMR", 3},
-                   {"atvr", "ATVR", 3},              {"indices_per_triangle", "indices/triangle", 3},
+  table.columns = {{"algo", "algorithm", 0},
+                   {"policy", "policy", 0},
+                   {"cache", "cache", 0},
+                   {"target", "target", 0},
+                   {"triangles", "triangles", 0},
+                   {"vertices", "vertices", 0},
+                   {"misses", "misses", 0},
+                   {"acmr", "ACMR", 3},
+                   {"atvr", "ATVR", 3},
+                   {"indices_per_triangle", "indices/triangle", 3},
                    {"vertices_sent", "vertices sent", 0},  // Yang et al.'s strip cost (reorder/strip.h)
                    {"bandwidth", "bytes/triangle", 2}};
   if (spec.with_time) table.columns.push_back({"seconds", "seconds", 4});
@@ -86,11 +91,19 @@ Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheT
             simulate_vertex_stream(ordering.indices, ordering.type, policy, cache, ordering.restart_index);
         if (spec.eviction_charged)
           stats.misses = eviction_charged_transforms(ordering.indices, ordering.type, cache, ordering.restart_index);
-        std::vector<TableCell> row = {algorithm->name, to_string(policy), cache, target, stats.triangles,
-                                      stats.vertices, stats.misses, stats.acmr(), stats.atvr(),
-                                      stats.indices_per_triangle(),
-                                      strip_stats(ordering.indices, ordering.type, ordering.restart_index).vertices_sent,
-                                      stats.acmr() * 32.0 + stats.indices_per_triangle() * 2.0};
+        std::vector<TableCell> row = {
+            algorithm->name,
+            to_string(policy),
+            cache,
+            target,
+            stats.triangles,
+            stats.vertices,
+            stats.misses,
+            stats.acmr(),
+            stats.atvr(),
+            stats.indices_per_triangle(),
+            strip_stats(ordering.indices, ordering.type, ordering.restart_index).vertices_sent,
+            stats.acmr() * 32.0 + stats.indices_per_triangle() * 2.0};
         if (spec.with_time) row.emplace_back(found->second.seconds);
         table.add_row(std::move(row));
       }

@@ -20,7 +20,7 @@ struct VcacheTableSpec {
   std::uint64_t seed = 1;
   double time_budget = 60.0;
   std::uint64_t iteration_budget = 0;  // local optimization; 0: until no improvement
-  bool with_time = true;  // run times differ between runs: leave them out for byte-identical tables
+  bool with_time = true;               // run times differ between runs: leave them out for byte-identical tables
   // Count transforms as NVIDIA Mesh Tools charged them (cache_sim/eviction_charged.h), which is
   // how Castano's grid tables were counted; FIFO only. False: true misses.
   bool eviction_charged = false;

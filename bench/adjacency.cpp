@@ -60,7 +60,8 @@ BENCHMARK(BM_Assignment)->Unit(benchmark::kMillisecond);
 void BM_Encode(benchmark::State& state) {
   const Bunny& b = bunny();
   for (auto _ : state)
-    benchmark::DoNotOptimize(encode_adjacency_primitives(b.mesh, b.build.dual, b.build.cover.in_cover, b.build.assignment));
+    benchmark::DoNotOptimize(
+        encode_adjacency_primitives(b.mesh, b.build.dual, b.build.cover.in_cover, b.build.assignment));
 }
 BENCHMARK(BM_Encode)->Unit(benchmark::kMillisecond);
 

@@ -41,7 +41,8 @@ void BM_FifoVertexReplay_Rastrace(benchmark::State& state) {
   const auto& indices = bunny_indices();
   const unsigned k = static_cast<unsigned>(state.range(0));
   for (auto _ : state) {
-    const VertexStreamStats s = simulate_vertex_stream(indices, PrimitiveType::TriangleList, VertexCachePolicy::Fifo, k);
+    const VertexStreamStats s =
+        simulate_vertex_stream(indices, PrimitiveType::TriangleList, VertexCachePolicy::Fifo, k);
     benchmark::DoNotOptimize(s.misses);
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * indices.size()));
@@ -53,7 +54,8 @@ void BM_FifoVertexReplay_Meshopt(benchmark::State& state) {
   const std::size_t vertices = vertex_count(indices);
   const unsigned k = static_cast<unsigned>(state.range(0));
   for (auto _ : state) {
-    const meshopt_VertexCacheStatistics s = meshopt_analyzeVertexCache(indices.data(), indices.size(), vertices, k, 0, 0);
+    const meshopt_VertexCacheStatistics s =
+        meshopt_analyzeVertexCache(indices.data(), indices.size(), vertices, k, 0, 0);
     benchmark::DoNotOptimize(s.vertices_transformed);
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * indices.size()));
@@ -67,7 +69,8 @@ const std::vector<std::uint64_t>& frame_lines(std::uint32_t line_bytes) {
     const testing::SyntheticFrame frame = testing::make_synthetic_frame(512, 512, 1024);
     const TextureLayout layout(parse_layout("block4"), frame.textures);
     lines.clear();
-    for (const TexelAccess& t : frame.texels) lines.push_back(layout.address(t.texture, t.level, t.x, t.y) / line_bytes);
+    for (const TexelAccess& t : frame.texels)
+      lines.push_back(layout.address(t.texture, t.level, t.x, t.y) / line_bytes);
     cached = line_bytes;
   }
   return lines;
@@ -107,7 +110,8 @@ BENCHMARK(BM_ByteCachePolicies)
 
 void BM_OptFullyAssociative_16KiB(benchmark::State& state) {
   const auto& lines = frame_lines(64);
-  for (auto _ : state) benchmark::DoNotOptimize(simulate_opt({16 * 1024, 64, 0, ReplacementPolicy::Opt, 1}, lines).misses);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(simulate_opt({16 * 1024, 64, 0, ReplacementPolicy::Opt, 1}, lines).misses);
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * lines.size()));
 }
 BENCHMARK(BM_OptFullyAssociative_16KiB)->Unit(benchmark::kMillisecond);

@@ -108,6 +108,12 @@ void BM_OSMesa(benchmark::State& state) {
   state.SetLabel(renderer);
   report(state, frame_fragments());
 }
-BENCHMARK(BM_OSMesa)->ArgName("llvmpipe")->Arg(0)->Arg(1)->UseManualTime()->Iterations(3)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OSMesa)
+    ->ArgName("llvmpipe")
+    ->Arg(0)
+    ->Arg(1)
+    ->UseManualTime()
+    ->Iterations(3)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Hoppe 1999's greedy strip-growing and local optimization, and the `strip` stripifier, on the
 // CGAL meshes. Faces per second are reported as items_per_second.
-//   bench_reorder_hoppe --benchmark_filter='Greedy|MeshTopology' --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//   bench_reorder_hoppe --benchmark_filter='Greedy|MeshTopology' --benchmark_repetitions=5
+//   --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
 #include <map>

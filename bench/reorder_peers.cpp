@@ -20,7 +20,8 @@ const rastrace::Mesh& bench_mesh(const std::string& name) {
   static std::map<std::string, rastrace::Mesh> meshes;
   auto found = meshes.find(name);
   if (found == meshes.end())
-    found = meshes.emplace(name, rastrace::load_mesh(std::string(RASTRACE_DATA_DIR) + "/meshes/" + name + ".off")).first;
+    found =
+        meshes.emplace(name, rastrace::load_mesh(std::string(RASTRACE_DATA_DIR) + "/meshes/" + name + ".off")).first;
   return found->second;
 }
 
@@ -34,11 +35,13 @@ void run_on(benchmark::State& state, Run run) {
   std::vector<std::uint32_t> last;
   for (auto _ : state) last = run(mesh);
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * mesh.face_count()));
-  state.counters["acmr_fifo16"] =
-      rastrace::simulate_vertex_stream(last, rastrace::PrimitiveType::TriangleList, rastrace::VertexCachePolicy::Fifo, 16).acmr();
+  state.counters["acmr_fifo16"] = rastrace::simulate_vertex_stream(last, rastrace::PrimitiveType::TriangleList,
+                                                                   rastrace::VertexCachePolicy::Fifo, 16)
+                                      .acmr();
 }
 
-void ours(benchmark::State& state, rastrace::Ordering (*algorithm)(const rastrace::Mesh&, const rastrace::ReorderParams&)) {
+void ours(benchmark::State& state,
+          rastrace::Ordering (*algorithm)(const rastrace::Mesh&, const rastrace::ReorderParams&)) {
   rastrace::ReorderParams params;
   params.cache_size = 16;
   run_on(state, [&](const rastrace::Mesh& mesh) {

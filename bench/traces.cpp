@@ -28,7 +28,8 @@ namespace rastrace {
 namespace {
 
 std::string temp(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("rastrace_bench_" + std::to_string(::getpid()) + "_" + name)).string();
+  return (std::filesystem::temp_directory_path() / ("rastrace_bench_" + std::to_string(::getpid()) + "_" + name))
+      .string();
 }
 
 const testing::SyntheticFrame& frame() {

@@ -72,9 +72,12 @@ class ByteCache {
 
   bool access_scan(std::uint64_t line) {
     switch (config_.policy) {
-      case ReplacementPolicy::Lru: return scan_set<ReplacementPolicy::Lru>(line);
-      case ReplacementPolicy::Fifo: return scan_set<ReplacementPolicy::Fifo>(line);
-      default: return scan_set<ReplacementPolicy::Random>(line);
+      case ReplacementPolicy::Lru:
+        return scan_set<ReplacementPolicy::Lru>(line);
+      case ReplacementPolicy::Fifo:
+        return scan_set<ReplacementPolicy::Fifo>(line);
+      default:
+        return scan_set<ReplacementPolicy::Random>(line);
     }
   }
   bool access_hashed(std::uint64_t line);
@@ -96,9 +99,9 @@ class ByteCache {
   // Hashed engine: slot = set * ways + way.
   LineMap map_;
   std::vector<std::uint64_t> slot_line_;
-  std::vector<std::uint32_t> prev_, next_;   // LRU list per set, through slots
-  std::vector<std::uint32_t> head_;          // per set: most recent slot (LRU) or next victim (FIFO)
-  std::vector<std::uint32_t> filled_;        // per set: ways in use
+  std::vector<std::uint32_t> prev_, next_;  // LRU list per set, through slots
+  std::vector<std::uint32_t> head_;         // per set: most recent slot (LRU) or next victim (FIFO)
+  std::vector<std::uint32_t> filled_;       // per set: ways in use
 };
 
 }  // namespace rastrace

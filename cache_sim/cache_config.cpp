@@ -9,10 +9,14 @@ namespace rastrace {
 
 const char* to_string(ReplacementPolicy policy) {
   switch (policy) {
-    case ReplacementPolicy::Fifo: return "fifo";
-    case ReplacementPolicy::Lru: return "lru";
-    case ReplacementPolicy::Random: return "random";
-    default: return "opt";
+    case ReplacementPolicy::Fifo:
+      return "fifo";
+    case ReplacementPolicy::Lru:
+      return "lru";
+    case ReplacementPolicy::Random:
+      return "random";
+    default:
+      return "opt";
   }
 }
 
@@ -25,8 +29,8 @@ ReplacementPolicy parse_replacement_policy(const std::string& text) {
 }
 
 void validate(const CacheConfig& c) {
-  const std::string name = "cache " + format_byte_size(c.size_bytes) + "/" + format_byte_size(c.line_bytes) +
-                           "/" + (c.assoc == 0 ? std::string("full") : std::to_string(c.assoc) + "-way");
+  const std::string name = "cache " + format_byte_size(c.size_bytes) + "/" + format_byte_size(c.line_bytes) + "/" +
+                           (c.assoc == 0 ? std::string("full") : std::to_string(c.assoc) + "-way");
   if (c.size_bytes == 0) throw InputError("cache size 0: expected at least one line");
   if (c.line_bytes == 0 || !std::has_single_bit(c.line_bytes))
     throw InputError(name + ": line size " + std::to_string(c.line_bytes) + " bytes: expected a power of two");
@@ -34,8 +38,8 @@ void validate(const CacheConfig& c) {
     throw InputError(name + ": capacity is not a whole number of lines");
   if (c.lines() > (std::uint64_t{1} << 31)) throw InputError(name + ": more than 2^31 lines");
   if (c.assoc != 0 && c.lines() % c.assoc != 0)
-    throw InputError(name + ": " + std::to_string(c.lines()) + " lines do not divide into " +
-                     std::to_string(c.assoc) + "-way sets");
+    throw InputError(name + ": " + std::to_string(c.lines()) + " lines do not divide into " + std::to_string(c.assoc) +
+                     "-way sets");
 }
 
 std::string describe(const CacheConfig& c) {

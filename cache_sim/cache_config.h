@@ -26,7 +26,7 @@ struct CacheConfig {
   std::uint32_t line_bytes = 64;
   std::uint32_t assoc = 4;  // 0 = fully associative
   ReplacementPolicy policy = ReplacementPolicy::Lru;
-  std::uint64_t seed = 1;   // random policy only
+  std::uint64_t seed = 1;  // random policy only
 
   std::uint64_t lines() const { return size_bytes / line_bytes; }
   std::uint64_t ways() const { return assoc == 0 ? lines() : assoc; }

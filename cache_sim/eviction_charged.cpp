@@ -43,8 +43,8 @@ class EvictionChargedFifo {
 
 }  // namespace
 
-std::uint64_t eviction_charged_transforms(std::span<const std::uint32_t> indices, PrimitiveType type,
-                                          unsigned entries, std::uint32_t restart_index) {
+std::uint64_t eviction_charged_transforms(std::span<const std::uint32_t> indices, PrimitiveType type, unsigned entries,
+                                          std::uint32_t restart_index) {
   if (entries == 0) throw InputError("vertex cache size 0: expected at least 1 entry");
   EvictionChargedFifo cache(entries);
   switch (type) {

@@ -79,8 +79,10 @@ LiveBankSink::LiveBankSink(CacheBankConfig config, TextureLevels textures)
     }
     BankCache bc;
     bc.config = cache;
-    if (cache.policy == ReplacementPolicy::Opt) st.groups[g].keep_for_opt = true;
-    else bc.cache = std::make_unique<ByteCache>(cache);
+    if (cache.policy == ReplacementPolicy::Opt)
+      st.groups[g].keep_for_opt = true;
+    else
+      bc.cache = std::make_unique<ByteCache>(cache);
     bc.stream = s;
     bc.group = g;
     st.groups[g].caches.push_back(caches_.size());
@@ -134,8 +136,10 @@ void LiveBankSink::on_vertex(std::uint32_t vertex, bool primitive_start) {
     ++shared_.vertices;
   }
   const auto triangle = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    if (a == b || b == c || a == c) ++shared_.degenerate;
-    else ++shared_.triangles;
+    if (a == b || b == c || a == c)
+      ++shared_.degenerate;
+    else
+      ++shared_.triangles;
   };
   switch (draw_.type) {
     case PrimitiveType::TriangleList:
@@ -144,8 +148,10 @@ void LiveBankSink::on_vertex(std::uint32_t vertex, bool primitive_start) {
       if (primitive_start) primitive_count_ = 0;
       if (primitive_count_ < size) primitive_[primitive_count_] = vertex;
       if (++primitive_count_ == size) {
-        if (size == 3) triangle(primitive_[0], primitive_[1], primitive_[2]);
-        else triangle(primitive_[0], primitive_[2], primitive_[4]);
+        if (size == 3)
+          triangle(primitive_[0], primitive_[1], primitive_[2]);
+        else
+          triangle(primitive_[0], primitive_[2], primitive_[4]);
       }
       break;
     }

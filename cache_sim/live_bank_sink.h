@@ -95,8 +95,8 @@ class LiveBankSink final : public EventSink {
   VertexStreamStats shared_;  // triangles, degenerates, vertices, indices sent, lookups
   std::vector<std::uint64_t> vertex_misses_;
   DrawInfo draw_{};
-  std::uint32_t draw_serial_ = 0;       // counts begin_draw calls (distinct-vertex stamps)
-  std::vector<std::uint32_t> seen_;     // per vertex: draw_serial_ + 1 when referenced in this draw
+  std::uint32_t draw_serial_ = 0;    // counts begin_draw calls (distinct-vertex stamps)
+  std::vector<std::uint32_t> seen_;  // per vertex: draw_serial_ + 1 when referenced in this draw
   std::uint32_t primitive_[6] = {};
   unsigned primitive_count_ = 0;
   std::uint64_t strip_length_ = 0;
@@ -104,7 +104,7 @@ class LiveBankSink final : public EventSink {
 
   // Byte caches.
   std::vector<std::unique_ptr<AddressStream>> streams_;
-  std::vector<BankCache> caches_;  // texture, then vertex_buffer, then address
+  std::vector<BankCache> caches_;                   // texture, then vertex_buffer, then address
   std::vector<std::size_t> vertex_buffer_streams_;  // stream indices fed by vertex fetches
   std::vector<std::size_t> texture_streams_;
   std::vector<std::size_t> address_streams_;

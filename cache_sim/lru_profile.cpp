@@ -40,8 +40,7 @@ std::uint64_t LruStackProfile::misses(std::uint64_t lines) const {
   return misses;
 }
 
-SetAssocLruProfile::SetAssocLruProfile(std::uint64_t sets, std::uint32_t max_ways)
-    : sets_(sets), max_ways_(max_ways) {
+SetAssocLruProfile::SetAssocLruProfile(std::uint64_t sets, std::uint32_t max_ways) : sets_(sets), max_ways_(max_ways) {
   if (sets == 0 || max_ways == 0 || max_ways > 1024)
     throw InputError("set-associative profile: expected at least 1 set and 1..1024 ways");
   stacks_.assign(sets * max_ways, ~std::uint64_t{0});
@@ -53,8 +52,10 @@ void SetAssocLruProfile::access(std::uint64_t line) {
   std::uint64_t* stack = stacks_.data() + (line % sets_) * max_ways_;
   std::uint32_t depth = 0;
   while (depth < max_ways_ && stack[depth] != line) ++depth;
-  if (depth < max_ways_) ++depth_hits_[depth];
-  else depth = max_ways_ - 1;  // a miss for every associativity: the deepest line falls off
+  if (depth < max_ways_)
+    ++depth_hits_[depth];
+  else
+    depth = max_ways_ - 1;  // a miss for every associativity: the deepest line falls off
   for (std::uint32_t i = depth; i > 0; --i) stack[i] = stack[i - 1];
   stack[0] = line;
 }

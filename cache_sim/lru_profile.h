@@ -75,7 +75,7 @@ class LruStackProfile {
   }
   void compact();
 
-  LineMap map_;                        // line -> id
+  LineMap map_;                          // line -> id
   std::vector<std::uint64_t> last_use_;  // per id
   std::vector<std::int32_t> tree_;
   std::uint64_t tree_size_ = 0;
@@ -103,7 +103,7 @@ class SetAssocLruProfile {
   std::uint64_t sets_;
   std::uint32_t max_ways_;
   std::uint64_t accesses_ = 0;
-  std::vector<std::uint64_t> stacks_;  // per set, max_ways lines, most recent first (~0 = empty)
+  std::vector<std::uint64_t> stacks_;      // per set, max_ways lines, most recent first (~0 = empty)
   std::vector<std::uint64_t> depth_hits_;  // hits at each depth
 };
 

@@ -16,9 +16,12 @@ namespace rastrace {
 
 const char* to_string(SweepSource source) {
   switch (source) {
-    case SweepSource::Texel: return "texel";
-    case SweepSource::VertexBuffer: return "vertex";
-    default: return "address";
+    case SweepSource::Texel:
+      return "texel";
+    case SweepSource::VertexBuffer:
+      return "vertex";
+    default:
+      return "address";
   }
 }
 
@@ -49,9 +52,11 @@ ReplayKinds kinds_for(SweepSource source) {
 SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsigned threads, bool show_progress) {
   const TraceSummary summary = summarize_trace(trace_path);
   if (spec.source == SweepSource::Texel && summary.has_counts && summary.texels == 0)
-    throw_in_file(trace_path, "the trace has no texel accesses: expected a texel trace (or choose --source vertex/address)");
+    throw_in_file(trace_path,
+                  "the trace has no texel accesses: expected a texel trace (or choose --source vertex/address)");
   if (spec.source == SweepSource::Address && summary.has_counts && summary.addresses == 0)
-    throw_in_file(trace_path, "the trace has no address records: expected a din import (or choose --source texel/vertex)");
+    throw_in_file(trace_path,
+                  "the trace has no address records: expected a din import (or choose --source texel/vertex)");
   if (spec.source == SweepSource::VertexBuffer && summary.has_counts && summary.vertices == 0)
     throw_in_file(trace_path, "the trace has no vertex fetches");
   if (spec.source == SweepSource::Texel) {
@@ -59,7 +64,8 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
   }
 
   SweepResult result;
-  const std::vector<LayoutSpec> layouts = spec.source == SweepSource::Texel ? spec.layouts : std::vector<LayoutSpec>{LayoutSpec{}};
+  const std::vector<LayoutSpec> layouts =
+      spec.source == SweepSource::Texel ? spec.layouts : std::vector<LayoutSpec>{LayoutSpec{}};
   std::vector<Job> groups;
   for (std::size_t l = 0; l < layouts.size(); ++l)
     for (const ReplacementPolicy policy : spec.policies)
@@ -97,8 +103,9 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
   const std::size_t per_job = std::max<std::size_t>(1, (result.rows.size() + threads - 1) / threads);
   for (const Job& group : groups)
     for (std::size_t i = 0; i < group.rows.size(); i += per_job)
-      jobs.push_back({std::vector<std::size_t>(group.rows.begin() + static_cast<std::ptrdiff_t>(i),
-                                               group.rows.begin() + static_cast<std::ptrdiff_t>(std::min(group.rows.size(), i + per_job))),
+      jobs.push_back({std::vector<std::size_t>(
+                          group.rows.begin() + static_cast<std::ptrdiff_t>(i),
+                          group.rows.begin() + static_cast<std::ptrdiff_t>(std::min(group.rows.size(), i + per_job))),
                       group.layout});
 
   std::optional<Progress> progress;
@@ -116,9 +123,15 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
         bank.three_c = spec.three_c;
         for (const std::size_t r : job.rows) {
           switch (spec.source) {
-            case SweepSource::Texel: bank.texture.push_back({result.rows[r].cache, layouts[job.layout]}); break;
-            case SweepSource::VertexBuffer: bank.vertex_buffer.push_back({result.rows[r].cache, spec.stride}); break;
-            case SweepSource::Address: bank.address.push_back(result.rows[r].cache); break;
+            case SweepSource::Texel:
+              bank.texture.push_back({result.rows[r].cache, layouts[job.layout]});
+              break;
+            case SweepSource::VertexBuffer:
+              bank.vertex_buffer.push_back({result.rows[r].cache, spec.stride});
+              break;
+            case SweepSource::Address:
+              bank.address.push_back(result.rows[r].cache);
+              break;
           }
         }
         LiveBankSink sink(bank, summary.metadata.textures);
@@ -144,7 +157,8 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
   return result;
 }
 
-std::vector<VertexSweepRow> run_vertex_sweep(const std::string& trace_path, const std::vector<VertexCachePolicy>& policies,
+std::vector<VertexSweepRow> run_vertex_sweep(const std::string& trace_path,
+                                             const std::vector<VertexCachePolicy>& policies,
                                              const std::vector<unsigned>& entries, bool flush_per_draw) {
   CacheBankConfig bank;
   bank.flush_vertex_cache_per_draw = flush_per_draw;

@@ -41,20 +41,20 @@ struct SweepRow {
 };
 
 struct SweepResult {
-  std::vector<SweepRow> rows;          // sorted by layout, policy, line, assoc, size
-  std::vector<std::string> skipped;    // impossible combinations, described
+  std::vector<SweepRow> rows;        // sorted by layout, policy, line, assoc, size
+  std::vector<std::string> skipped;  // impossible combinations, described
 };
 
 // threads = 0: one per core. progress: a bar on stderr when it is a terminal.
-SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsigned threads = 0,
-                      bool progress = true);
+SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsigned threads = 0, bool progress = true);
 
 struct VertexSweepRow {
   VertexCacheSpec cache;
   VertexStreamStats stats;
 };
 // Post-transform vertex caches: every policy x entry count in one pass over the vertex fetches.
-std::vector<VertexSweepRow> run_vertex_sweep(const std::string& trace_path, const std::vector<VertexCachePolicy>& policies,
+std::vector<VertexSweepRow> run_vertex_sweep(const std::string& trace_path,
+                                             const std::vector<VertexCachePolicy>& policies,
                                              const std::vector<unsigned>& entries, bool flush_per_draw = true);
 
 }  // namespace rastrace

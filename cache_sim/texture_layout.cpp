@@ -25,9 +25,12 @@ LayoutSpec parse_layout(const std::string& name) {
 
 std::string layout_name(const LayoutSpec& spec) {
   switch (spec.kind) {
-    case LayoutKind::Linear: return "linear";
-    case LayoutKind::Block: return "block" + std::to_string(spec.block);
-    default: return "morton";
+    case LayoutKind::Linear:
+      return "linear";
+    case LayoutKind::Block:
+      return "block" + std::to_string(spec.block);
+    default:
+      return "morton";
   }
 }
 
@@ -60,9 +63,8 @@ TextureLayout::TextureLayout(const LayoutSpec& spec, const TextureLevels& textur
     for (std::size_t i = 0; i < textures[t].size(); ++i) {
       const LevelSize size = textures[t][i];
       if (size.width == 0 || size.height == 0)
-        throw InputError("texture " + std::to_string(t) + " level " + std::to_string(i) +
-                         " has size " + std::to_string(size.width) + "x" + std::to_string(size.height) +
-                         ": expected at least 1x1");
+        throw InputError("texture " + std::to_string(t) + " level " + std::to_string(i) + " has size " +
+                         std::to_string(size.width) + "x" + std::to_string(size.height) + ": expected at least 1x1");
       Level level;
       level.width = size.width;
       level.height = size.height;

@@ -22,9 +22,9 @@ enum class LayoutKind : std::uint8_t { Linear, Block, Morton };
 
 struct LayoutSpec {
   LayoutKind kind = LayoutKind::Linear;
-  std::uint32_t block = 4;          // Block only: 2, 4, 8 or 16
-  std::uint32_t texel_bytes = 4;    // 1..16, power of two
-  std::uint64_t alignment = 4096;   // power of two >= texel_bytes
+  std::uint32_t block = 4;         // Block only: 2, 4, 8 or 16
+  std::uint32_t texel_bytes = 4;   // 1..16, power of two
+  std::uint64_t alignment = 4096;  // power of two >= texel_bytes
 };
 
 // "linear", "block2".."block16", "morton"; throws InputError otherwise.
@@ -52,8 +52,8 @@ class TextureLayout {
       case LayoutKind::Block: {
         const std::uint32_t bx = x >> block_shift_, by = y >> block_shift_;
         const std::uint32_t mask = spec_.block - 1;
-        offset = ((std::uint64_t{by} * l.blocks_per_row + bx) << (2 * block_shift_)) +
-                 ((y & mask) << block_shift_) + (x & mask);
+        offset = ((std::uint64_t{by} * l.blocks_per_row + bx) << (2 * block_shift_)) + ((y & mask) << block_shift_) +
+                 (x & mask);
         break;
       }
       default: {
@@ -77,9 +77,7 @@ class TextureLayout {
   // One past the last byte of the last level.
   std::uint64_t total_bytes() const { return total_bytes_; }
 
-  static std::uint64_t interleave(std::uint32_t x, std::uint32_t y) {
-    return spread(x) | (spread(y) << 1);
-  }
+  static std::uint64_t interleave(std::uint32_t x, std::uint32_t y) { return spread(x) | (spread(y) << 1); }
 
  private:
   static std::uint64_t spread(std::uint32_t v) {

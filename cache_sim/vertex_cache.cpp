@@ -6,9 +6,7 @@
 
 namespace rastrace {
 
-const char* to_string(VertexCachePolicy policy) {
-  return policy == VertexCachePolicy::Fifo ? "fifo" : "lru";
-}
+const char* to_string(VertexCachePolicy policy) { return policy == VertexCachePolicy::Fifo ? "fifo" : "lru"; }
 
 VertexCachePolicy parse_vertex_cache_policy(const std::string& text) {
   if (text == "fifo") return VertexCachePolicy::Fifo;
@@ -34,8 +32,10 @@ bool VertexCache::access_lru(std::uint32_t vertex) {
     std::rotate(recency_.begin(), found, found + 1);
     return true;
   }
-  if (recency_.size() < entries_) recency_.push_back(vertex);
-  else recency_.back() = vertex;
+  if (recency_.size() < entries_)
+    recency_.push_back(vertex);
+  else
+    recency_.back() = vertex;
   std::rotate(recency_.begin(), recency_.end() - 1, recency_.end());
   return false;
 }
@@ -82,8 +82,7 @@ VertexStreamStats simulate_fifo_list(std::span<const std::uint32_t> indices, uns
 }  // namespace
 
 VertexStreamStats simulate_vertex_stream(std::span<const std::uint32_t> indices, PrimitiveType type,
-                                         VertexCachePolicy policy, unsigned entries,
-                                         std::uint32_t restart_index) {
+                                         VertexCachePolicy policy, unsigned entries, std::uint32_t restart_index) {
   VertexCache cache(policy, entries);
   // 2^32 - entries misses would wrap the 32-bit clock: longer streams take the general path.
   if (type == PrimitiveType::TriangleList && policy == VertexCachePolicy::Fifo &&
@@ -103,8 +102,10 @@ VertexStreamStats simulate_vertex_stream(std::span<const std::uint32_t> indices,
     }
   }
   for_each_triangle(indices, type, restart_index, [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    if (a == b || b == c || a == c) ++stats.degenerate;
-    else ++stats.triangles;
+    if (a == b || b == c || a == c)
+      ++stats.degenerate;
+    else
+      ++stats.triangles;
   });
   return stats;
 }

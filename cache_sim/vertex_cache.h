@@ -50,19 +50,17 @@ class VertexCache {
 };
 
 struct VertexStreamStats {
-  std::uint64_t lookups = 0;      // indices looked up (restart indices excluded)
-  std::uint64_t misses = 0;       // vertex shader invocations
-  std::uint64_t triangles = 0;    // drawn (non-degenerate) triangles
-  std::uint64_t degenerate = 0;   // triangles with a repeated vertex: looked up, not drawn
-  std::uint64_t vertices = 0;     // distinct vertices referenced
+  std::uint64_t lookups = 0;     // indices looked up (restart indices excluded)
+  std::uint64_t misses = 0;      // vertex shader invocations
+  std::uint64_t triangles = 0;   // drawn (non-degenerate) triangles
+  std::uint64_t degenerate = 0;  // triangles with a repeated vertex: looked up, not drawn
+  std::uint64_t vertices = 0;    // distinct vertices referenced
 
   double acmr() const { return triangles ? double(misses) / double(triangles) : 0.0; }
   double atvr() const { return vertices ? double(misses) / double(vertices) : 0.0; }
   // Hoppe's b: indices sent per drawn triangle (restart indices count: they are sent).
   std::uint64_t indices_sent = 0;
-  double indices_per_triangle() const {
-    return triangles ? double(indices_sent) / double(triangles) : 0.0;
-  }
+  double indices_per_triangle() const { return triangles ? double(indices_sent) / double(triangles) : 0.0; }
 };
 
 // Runs an index stream through a vertex cache, primitive by primitive as the pipeline does.
@@ -73,8 +71,8 @@ VertexStreamStats simulate_vertex_stream(std::span<const std::uint32_t> indices,
 // Calls visit(a, b, c) for every triangle of the stream in draw order (degenerates included),
 // with the winding GL gives it (a strip's odd triangles are flipped back to the strip's winding).
 template <typename Visit>
-void for_each_triangle(std::span<const std::uint32_t> indices, PrimitiveType type,
-                       std::uint32_t restart_index, Visit&& visit) {
+void for_each_triangle(std::span<const std::uint32_t> indices, PrimitiveType type, std::uint32_t restart_index,
+                       Visit&& visit) {
   switch (type) {
     case PrimitiveType::TriangleList:
       for (std::size_t i = 0; i + 2 < indices.size(); i += 3) visit(indices[i], indices[i + 1], indices[i + 2]);
@@ -92,8 +90,10 @@ void for_each_triangle(std::span<const std::uint32_t> indices, PrimitiveType typ
         if (++in_strip >= 3) {
           // GL: triangle i of a strip is (v[i], v[i+1], v[i+2]) for even i, (v[i+1], v[i], v[i+2]) for odd.
           const bool odd = (in_strip - 3) % 2 == 1;
-          if (odd) visit(indices[i - 1], indices[i - 2], indices[i]);
-          else visit(indices[i - 2], indices[i - 1], indices[i]);
+          if (odd)
+            visit(indices[i - 1], indices[i - 2], indices[i]);
+          else
+            visit(indices[i - 2], indices[i - 1], indices[i]);
         }
       }
       break;

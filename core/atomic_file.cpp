@@ -43,8 +43,8 @@ void AtomicFile::commit() {
   committed_ = true;
 }
 
-void write_file_atomically(const std::filesystem::path& path,
-                           const std::function<void(std::ostream&)>& write, bool binary) {
+void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write,
+                           bool binary) {
   AtomicFile file(path, binary);
   write(file.stream());
   file.commit();

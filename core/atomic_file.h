@@ -30,8 +30,8 @@ class AtomicFile {
 };
 
 // Writes a whole file through an AtomicFile.
-void write_file_atomically(const std::filesystem::path& path,
-                           const std::function<void(std::ostream&)>& write, bool binary = true);
+void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write,
+                           bool binary = true);
 
 // For writers that take a file name: calls write(temporary name), then renames it over path.
 void write_via_temporary(const std::filesystem::path& path,

@@ -10,8 +10,6 @@ void throw_at_byte(const std::string& file, std::uint64_t offset, const std::str
   throw InputError(file + ": byte " + std::to_string(offset) + ": " + message);
 }
 
-void throw_in_file(const std::string& file, const std::string& message) {
-  throw InputError(file + ": " + message);
-}
+void throw_in_file(const std::string& file, const std::string& message) { throw InputError(file + ": " + message); }
 
 }  // namespace rastrace

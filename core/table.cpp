@@ -20,8 +20,8 @@ TableFormat parse_table_format(const std::string& text) {
 
 void Table::add_row(std::vector<TableCell> row) {
   if (row.size() != columns.size())
-    throw std::logic_error("table '" + title + "': row of " + std::to_string(row.size()) +
-                           " cells for " + std::to_string(columns.size()) + " columns");
+    throw std::logic_error("table '" + title + "': row of " + std::to_string(row.size()) + " cells for " +
+                           std::to_string(columns.size()) + " columns");
   rows.push_back(std::move(row));
 }
 
@@ -72,14 +72,27 @@ std::string latex_escape(const std::string& text) {
   std::string escaped;
   for (const char c : text) {
     switch (c) {
-      case '_': case '%': case '&': case '#': case '$': case '{': case '}':
+      case '_':
+      case '%':
+      case '&':
+      case '#':
+      case '$':
+      case '{':
+      case '}':
         escaped += '\\';
         escaped += c;
         break;
-      case '~': escaped += "\\textasciitilde{}"; break;
-      case '^': escaped += "\\textasciicircum{}"; break;
-      case '\\': escaped += "\\textbackslash{}"; break;
-      default: escaped += c;
+      case '~':
+        escaped += "\\textasciitilde{}";
+        break;
+      case '^':
+        escaped += "\\textasciicircum{}";
+        break;
+      case '\\':
+        escaped += "\\textbackslash{}";
+        break;
+      default:
+        escaped += c;
     }
   }
   return escaped;
@@ -171,10 +184,17 @@ std::string render_tables(std::span<const Table> tables, TableFormat format) {
   for (const Table& table : tables) {
     if (!out.empty()) out += "\n";
     switch (format) {
-      case TableFormat::Markdown: out += markdown(table); break;
-      case TableFormat::Csv: out += csv(table); break;
-      case TableFormat::Latex: out += latex(table); break;
-      case TableFormat::Json: break;
+      case TableFormat::Markdown:
+        out += markdown(table);
+        break;
+      case TableFormat::Csv:
+        out += csv(table);
+        break;
+      case TableFormat::Latex:
+        out += latex(table);
+        break;
+      case TableFormat::Json:
+        break;
     }
   }
   return out;

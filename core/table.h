@@ -6,8 +6,8 @@
 #pragma once
 
 #include <cstdint>
-#include <string>
 #include <span>
+#include <string>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -28,14 +28,13 @@ struct TableCell {
   TableCell(double number) : value(number) {}
   TableCell(float number) : value(static_cast<double>(number)) {}
   template <typename Integer>
-    requires std::is_integral_v<Integer>
-  TableCell(Integer number) : value(static_cast<std::int64_t>(number)) {}
+  requires std::is_integral_v<Integer> TableCell(Integer number) : value(static_cast<std::int64_t>(number)) {}
 };
 
 struct TableColumn {
-  std::string key;       // JSON key and CSV header: snake_case ("miss_rate")
-  std::string heading;   // Markdown/LaTeX heading ("miss rate"); the key when empty
-  int precision = 3;     // digits after the point for floating-point cells (text formats)
+  std::string key;      // JSON key and CSV header: snake_case ("miss_rate")
+  std::string heading;  // Markdown/LaTeX heading ("miss rate"); the key when empty
+  int precision = 3;    // digits after the point for floating-point cells (text formats)
 };
 
 struct Table {

@@ -76,11 +76,16 @@ std::uint64_t parse_byte_size(const std::string& text, const std::string& what) 
   const std::uint64_t number = parse_digits(text.substr(0, end), what, text, expected);
   const std::string unit = text.substr(end);
   int shift = 0;
-  if (unit.empty() || unit == "B") shift = 0;
-  else if (unit == "KiB") shift = 10;
-  else if (unit == "MiB") shift = 20;
-  else if (unit == "GiB") shift = 30;
-  else bad(what, text, expected);
+  if (unit.empty() || unit == "B")
+    shift = 0;
+  else if (unit == "KiB")
+    shift = 10;
+  else if (unit == "MiB")
+    shift = 20;
+  else if (unit == "GiB")
+    shift = 30;
+  else
+    bad(what, text, expected);
   if (number == 0) bad(what, text, "a size above 0 bytes");
   if (number > (std::numeric_limits<std::uint64_t>::max() >> shift)) bad(what, text, "a size below 2^64 bytes");
   return number << shift;

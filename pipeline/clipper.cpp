@@ -11,12 +11,18 @@ Clipper::Clipper(int viewport_width, int viewport_height, float guard_band)
 // Planes: 0 near, 1 far, 2 left, 3 right, 4 bottom, 5 top; inside when distance >= 0.
 float Clipper::distance(int plane, const glm::vec4& p) const {
   switch (plane) {
-    case 0: return p.z + p.w;
-    case 1: return p.w - p.z;
-    case 2: return p.x + gx_ * p.w;
-    case 3: return gx_ * p.w - p.x;
-    case 4: return p.y + gy_ * p.w;
-    default: return gy_ * p.w - p.y;
+    case 0:
+      return p.z + p.w;
+    case 1:
+      return p.w - p.z;
+    case 2:
+      return p.x + gx_ * p.w;
+    case 3:
+      return gx_ * p.w - p.x;
+    case 4:
+      return p.y + gy_ * p.w;
+    default:
+      return gy_ * p.w - p.y;
   }
 }
 

@@ -51,8 +51,8 @@ void EdgeStage::primitive(const AssembledPrimitive& p) {
   if (options_.record) faces_.push_back({i[0], i[2], i[4]});
 
   const bool cover_front = front_facing(p.shaded, i[0], i[2], i[4]);
-  const glm::vec3 cover_normal = glm::cross(mesh_.positions[i[2]] - mesh_.positions[i[0]],
-                                            mesh_.positions[i[4]] - mesh_.positions[i[0]]);
+  const glm::vec3 cover_normal =
+      glm::cross(mesh_.positions[i[2]] - mesh_.positions[i[0]], mesh_.positions[i[4]] - mesh_.positions[i[0]]);
   if (i[1] != i[0] && i[1] != i[2]) {
     ++stats_.assigned_faces;
     if (options_.record) faces_.push_back({i[0], i[1], i[2]});
@@ -71,8 +71,8 @@ void EdgeStage::primitive(const AssembledPrimitive& p) {
         flags |= kEdgeSilhouette;
         ++stats_.silhouette_edges;
       }
-      const glm::vec3 other_normal = glm::cross(mesh_.positions[across] - mesh_.positions[from],
-                                                mesh_.positions[to] - mesh_.positions[from]);
+      const glm::vec3 other_normal =
+          glm::cross(mesh_.positions[across] - mesh_.positions[from], mesh_.positions[to] - mesh_.positions[from]);
       const float lengths = glm::length(cover_normal) * glm::length(other_normal);
       if (lengths > 0.0f && glm::dot(cover_normal, other_normal) < sharp_cosine_ * lengths) {
         flags |= kEdgeSharp;
@@ -81,7 +81,8 @@ void EdgeStage::primitive(const AssembledPrimitive& p) {
     }
     if (options_.record) edges_.push_back({from, to, flags});
     const bool draw = ((flags & kEdgeSilhouette) && options_.draw_silhouettes) ||
-                      ((flags & kEdgeSharp) && options_.draw_sharp) || ((flags & kEdgeBoundary) && options_.draw_boundary);
+                      ((flags & kEdgeSharp) && options_.draw_sharp) ||
+                      ((flags & kEdgeBoundary) && options_.draw_boundary);
     if (draw && lines_) draw_line(p.shaded[from].clip, p.shaded[to].clip);
   }
 }
@@ -112,8 +113,8 @@ void EdgeStage::draw_line(const glm::vec4& a, const glm::vec4& b) {
   const float hi = std::clamp(std::floor(std::max(x_major ? x0 : y0, x_major ? x1 : y1)) + 1.0f, -2.0f, extent);
   for (int major = int(lo); major <= int(hi); ++major) {
     const float centre = float(major) + 0.5f;
-    const float along = x_major ? (dx != 0.0f ? y0 + (centre - x0) * dy / dx : y0)
-                                : (dy != 0.0f ? x0 + (centre - y0) * dx / dy : x0);
+    const float along =
+        x_major ? (dx != 0.0f ? y0 + (centre - x0) * dy / dx : y0) : (dy != 0.0f ? x0 + (centre - y0) * dx / dy : x0);
     if (!(std::fabs(along) < 1e8f)) continue;  // far off the viewport (or NaN)
     const int minor = int(std::floor(along));
     for (int m = minor - 1; m <= minor + 1; ++m) {

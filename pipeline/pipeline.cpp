@@ -55,7 +55,8 @@ void Pipeline::draw(const Mesh& mesh, const glm::mat4& model, const DrawCall& ca
   for (std::size_t m = 0; m < mesh.materials.size(); ++m) {
     const int texture = mesh.materials[m].texture;
     if (texture < 0) continue;
-    if (static_cast<std::size_t>(texture) >= textures.size() || textures[static_cast<std::size_t>(texture)].levels.empty())
+    if (static_cast<std::size_t>(texture) >= textures.size() ||
+        textures[static_cast<std::size_t>(texture)].levels.empty())
       throw InputError(mesh.name + ": material " + std::to_string(m) + " uses texture " + std::to_string(texture) +
                        " but " + std::to_string(textures.size()) + " textures are loaded");
     if (has_uvs) {
@@ -64,9 +65,10 @@ void Pipeline::draw(const Mesh& mesh, const glm::mat4& model, const DrawCall& ca
     }
   }
   auto material_of = [&](std::uint32_t primitive) -> std::uint32_t {
-    const std::uint32_t m = call.primitive_materials.empty()
-                                ? call.material
-                                : (primitive < call.primitive_materials.size() ? call.primitive_materials[primitive] : 0u);
+    const std::uint32_t m =
+        call.primitive_materials.empty()
+            ? call.material
+            : (primitive < call.primitive_materials.size() ? call.primitive_materials[primitive] : 0u);
     if (m >= material_count)
       throw InputError(mesh.name + ": primitive " + std::to_string(primitive) + " uses material " + std::to_string(m) +
                        " but the mesh has " + std::to_string(mesh.materials.size()));
@@ -84,8 +86,8 @@ void Pipeline::draw(const Mesh& mesh, const glm::mat4& model, const DrawCall& ca
   auto fetch = [&](std::size_t position, bool primitive_start) {
     const std::uint32_t v = call.indices[position];
     if (v >= vertex_count)
-      throw InputError(mesh.name + ": draw " + std::to_string(draw) + ", index " + std::to_string(position) + ": vertex " +
-                       std::to_string(v) + " >= vertex count " + std::to_string(vertex_count));
+      throw InputError(mesh.name + ": draw " + std::to_string(draw) + ", index " + std::to_string(position) +
+                       ": vertex " + std::to_string(v) + " >= vertex count " + std::to_string(vertex_count));
     ++stats_.lookups;
     if (sink_) {
       fetch_buffer_.push_back(VertexFetch{v, primitive_start});
@@ -93,8 +95,8 @@ void Pipeline::draw(const Mesh& mesh, const glm::mat4& model, const DrawCall& ca
     }
     if (!cache_.access(v)) {
       ++stats_.vertices_shaded;
-      shaded_[v] = shader_.shade(mesh.positions[v], has_normals ? &mesh.normals[v] : nullptr,
-                                 has_uvs ? &mesh.uvs[v] : nullptr);
+      shaded_[v] =
+          shader_.shade(mesh.positions[v], has_normals ? &mesh.normals[v] : nullptr, has_uvs ? &mesh.uvs[v] : nullptr);
     }
   };
 
@@ -152,8 +154,10 @@ void Pipeline::draw(const Mesh& mesh, const glm::mat4& model, const DrawCall& ca
         fetch(i, in_strip == 0);
         if (++in_strip >= 3) {
           // GL: triangle k of a strip is (v[k], v[k+1], v[k+2]) for even k, (v[k+1], v[k], v[k+2]) for odd k.
-          if ((in_strip - 3) % 2 == 1) assemble(idx[i - 1], idx[i - 2], idx[i], idx.subspan(i - 2, 3));
-          else assemble(idx[i - 2], idx[i - 1], idx[i], idx.subspan(i - 2, 3));
+          if ((in_strip - 3) % 2 == 1)
+            assemble(idx[i - 1], idx[i - 2], idx[i], idx.subspan(i - 2, 3));
+          else
+            assemble(idx[i - 2], idx[i - 1], idx[i], idx.subspan(i - 2, 3));
         }
       }
       break;

@@ -61,10 +61,10 @@ struct PipelineStats {
   std::uint64_t primitives = 0;       // assembled primitives, degenerates included
   std::uint64_t triangles = 0;        // non-degenerate triangles submitted ("drawn" for ACMR)
   std::uint64_t degenerate = 0;
-  std::uint64_t culled = 0;            // triangles removed by face culling
-  std::uint64_t outside = 0;           // triangles entirely outside one clip plane
-  std::uint64_t clipped = 0;           // triangles that needed clipping
-  std::uint64_t rasterized = 0;        // triangles handed to the rasterizer (after clipping)
+  std::uint64_t culled = 0;      // triangles removed by face culling
+  std::uint64_t outside = 0;     // triangles entirely outside one clip plane
+  std::uint64_t clipped = 0;     // triangles that needed clipping
+  std::uint64_t rasterized = 0;  // triangles handed to the rasterizer (after clipping)
   double acmr() const { return triangles ? double(vertices_shaded) / double(triangles) : 0.0; }
 };
 
@@ -75,8 +75,8 @@ struct AssembledPrimitive {
   std::uint32_t triangle = 0;   // frame-wide number of the triangle (as in TexelAccess events)
   bool degenerate = false;
   std::array<std::uint32_t, 3> triangle_indices{};  // in GL winding
-  std::span<const std::uint32_t> indices;            // the primitive's indices (3 or 6)
-  std::span<const ShadedVertex> shaded;              // indexed by vertex id; valid for these indices
+  std::span<const std::uint32_t> indices;           // the primitive's indices (3 or 6)
+  std::span<const ShadedVertex> shaded;             // indexed by vertex id; valid for these indices
 };
 
 class PrimitiveHook {

@@ -13,8 +13,8 @@ CameraMatrices camera_matrices(const Scene& scene) {
   const Camera& camera = scene.camera;
   m.view = glm::lookAt(camera.eye, camera.target, camera.up);
   m.projection = glm::perspective(glm::radians(camera.fov_y_degrees),
-                                  static_cast<float>(scene.width) / static_cast<float>(scene.height),
-                                  camera.near_plane, camera.far_plane);
+                                  static_cast<float>(scene.width) / static_cast<float>(scene.height), camera.near_plane,
+                                  camera.far_plane);
   return m;
 }
 

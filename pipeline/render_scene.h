@@ -1,6 +1,6 @@
 // Renders a whole Scene into a framebuffer: one draw per object (its triangle list in file order,
-// per-face materials, unless RenderOptions::object_draws says otherwise), with the scene's camera. The reference renderer uses the same matrices
-// (camera_matrices) so that both draw exactly the same frame.
+// per-face materials, unless RenderOptions::object_draws says otherwise), with the scene's camera. The reference
+// renderer uses the same matrices (camera_matrices) so that both draw exactly the same frame.
 #pragma once
 
 #include <optional>
@@ -25,8 +25,8 @@ CameraMatrices camera_matrices(const Scene& scene);
 
 struct RenderOptions {
   PipelineOptions pipeline;
-  bool debug_planes = false;                // write counts and centre-on-edge flags
-  std::optional<glm::vec4> clear_colour;    // default: the scene's background
+  bool debug_planes = false;              // write counts and centre-on-edge flags
+  std::optional<glm::vec4> clear_colour;  // default: the scene's background
   // Optional: one draw call per scene object (e.g. a reordered index stream); empty draws each
   // object's own triangle list. The spans must outlive the call.
   std::span<const DrawCall> object_draws;

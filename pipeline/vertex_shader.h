@@ -18,7 +18,7 @@ namespace rastrace {
 struct Lighting {
   bool enabled = false;
   glm::vec3 direction{0.0f, 0.0f, 1.0f};  // towards the light, eye space (GL_POSITION with w = 0)
-  float ambient = 0.2f;                    // GL_LIGHT_MODEL_AMBIENT, grey
+  float ambient = 0.2f;                   // GL_LIGHT_MODEL_AMBIENT, grey
 };
 
 struct ShadedVertex {

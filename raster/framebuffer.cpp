@@ -29,8 +29,7 @@ Framebuffer::Framebuffer(int width, int height, bool debug_planes) : width_(widt
 
 void Framebuffer::clear(const glm::vec4& colour, float depth) {
   std::uint8_t c[4];
-  for (int i = 0; i < 4; ++i)
-    c[i] = static_cast<std::uint8_t>(std::lround(std::clamp(colour[i], 0.0f, 1.0f) * 255.0f));
+  for (int i = 0; i < 4; ++i) c[i] = static_cast<std::uint8_t>(std::lround(std::clamp(colour[i], 0.0f, 1.0f) * 255.0f));
   std::uint32_t packed;
   std::memcpy(&packed, c, 4);
   std::uint8_t* out = colour_.data();

@@ -20,7 +20,7 @@ namespace {
 constexpr int kSubpixelBits = 8;
 constexpr std::int64_t kOne = std::int64_t{1} << kSubpixelBits;  // one pixel in fixed point
 constexpr std::int64_t kHalf = kOne / 2;                         // pixel centres
-constexpr int kAttributes = 8;  // q = 1/w, s*q, t*q, r*q, g*q, b*q, a*q, z
+constexpr int kAttributes = 8;                                   // q = 1/w, s*q, t*q, r*q, g*q, b*q, a*q, z
 constexpr int kTile = 8;
 
 // Round half away from zero, as llround, without the library call (|v| < 2^22 is checked first).
@@ -96,7 +96,8 @@ void Rasterizer::draw(const RasterVertex& va, const RasterVertex& vb, const Rast
     const bool top = dy == 0 && dx > 0;
     const bool left = dy < 0;
     s.bias[k] = (top || left) ? 0 : -1;
-    s.length[k] = std::sqrt(static_cast<double>(dx) * static_cast<double>(dx) + static_cast<double>(dy) * static_cast<double>(dy));
+    s.length[k] = std::sqrt(static_cast<double>(dx) * static_cast<double>(dx) +
+                            static_cast<double>(dy) * static_cast<double>(dy));
   }
   s.inv_area = static_cast<float>(1.0 / static_cast<double>(area));
 
@@ -122,11 +123,15 @@ void Rasterizer::draw(const RasterVertex& va, const RasterVertex& vb, const Rast
   const bool textured = state.texture != nullptr && !state.texture->levels.empty();
   const bool debug = framebuffer_.has_debug_planes();
   if (textured) {
-    if (debug) traverse<true, true>(s, state);
-    else traverse<true, false>(s, state);
+    if (debug)
+      traverse<true, true>(s, state);
+    else
+      traverse<true, false>(s, state);
   } else {
-    if (debug) traverse<false, true>(s, state);
-    else traverse<false, false>(s, state);
+    if (debug)
+      traverse<false, true>(s, state);
+    else
+      traverse<false, false>(s, state);
   }
 }
 
@@ -226,8 +231,7 @@ void Rasterizer::traverse(const Setup& s, const TriangleState& state) {
       }
       depth[p] = z[i];
       std::uint8_t* out = colour + p * 4;
-      for (int ch = 0; ch < 4; ++ch)
-        out[ch] = static_cast<std::uint8_t>(std::clamp(c[ch], 0.0f, 1.0f) * 255.0f + 0.5f);
+      for (int ch = 0; ch < 4; ++ch) out[ch] = static_cast<std::uint8_t>(std::clamp(c[ch], 0.0f, 1.0f) * 255.0f + 0.5f);
       if constexpr (kDebug) ++framebuffer_.write_count()[p];
     }
   };
@@ -249,7 +253,8 @@ void Rasterizer::traverse(const Setup& s, const TriangleState& state) {
   // maximum of a linear function over the tile is at the corner its gradient points to.
   std::int64_t tile_max[3];
   for (int k = 0; k < 3; ++k)
-    tile_max[k] = std::max<std::int64_t>(0, s.step_x[k]) * (kTile - 1) + std::max<std::int64_t>(0, s.step_y[k]) * (kTile - 1);
+    tile_max[k] =
+        std::max<std::int64_t>(0, s.step_x[k]) * (kTile - 1) + std::max<std::int64_t>(0, s.step_y[k]) * (kTile - 1);
   std::copy(s.origin, s.origin + 3, row);
   for (int ty = s.y0; ty <= s.y1; ty += kTile) {
     std::int64_t tile[3] = {row[0], row[1], row[2]};

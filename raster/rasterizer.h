@@ -59,9 +59,9 @@ struct RasterOptions {
 };
 
 struct RasterStats {
-  std::uint64_t triangles = 0;  // triangles set up with a non-zero area
-  std::uint64_t quads = 0;      // 2x2 quads with at least one covered pixel
-  std::uint64_t fragments = 0;  // covered pixels
+  std::uint64_t triangles = 0;         // triangles set up with a non-zero area
+  std::uint64_t quads = 0;             // 2x2 quads with at least one covered pixel
+  std::uint64_t fragments = 0;         // covered pixels
   std::uint64_t fragments_passed = 0;  // covered pixels that passed the depth test (written)
   std::uint64_t texel_reads = 0;
 };

@@ -41,19 +41,23 @@ TextureWrap parse_wrap(const std::string& text) {
 
 const char* to_string(TextureFilter filter) {
   switch (filter) {
-    case TextureFilter::Nearest: return "nearest";
-    case TextureFilter::Linear: return "linear";
-    case TextureFilter::NearestMipmapNearest: return "nearest_mipmap_nearest";
-    case TextureFilter::LinearMipmapNearest: return "linear_mipmap_nearest";
-    case TextureFilter::LinearMipmapLinear: return "linear_mipmap_linear";
+    case TextureFilter::Nearest:
+      return "nearest";
+    case TextureFilter::Linear:
+      return "linear";
+    case TextureFilter::NearestMipmapNearest:
+      return "nearest_mipmap_nearest";
+    case TextureFilter::LinearMipmapNearest:
+      return "linear_mipmap_nearest";
+    case TextureFilter::LinearMipmapLinear:
+      return "linear_mipmap_linear";
   }
   return "?";
 }
 
 const char* to_string(TextureWrap wrap) { return wrap == TextureWrap::Repeat ? "repeat" : "clamp_to_edge"; }
 
-float compute_lod(const SamplerState& state, int width, int height, float dsdx, float dtdx, float dsdy,
-                  float dtdy) {
+float compute_lod(const SamplerState& state, int width, int height, float dsdx, float dtdx, float dsdy, float dtdy) {
   const float w = static_cast<float>(width), h = static_cast<float>(height);
   const float dudx = dsdx * w, dvdx = dtdx * h, dudy = dsdy * w, dvdy = dtdy * h;
   float rho;
@@ -129,9 +133,8 @@ glm::vec4 sample_linear(const Image& image, unsigned level, const SamplerState& 
   return top + (bottom - top) * b;
 }
 
-inline glm::vec4 sample_level(const Texture& texture, unsigned level, TextureFilter filter,
-                              const SamplerState& state, float s, float t, TexelRecorder& recorder,
-                              const TexelSite& site) {
+inline glm::vec4 sample_level(const Texture& texture, unsigned level, TextureFilter filter, const SamplerState& state,
+                              float s, float t, TexelRecorder& recorder, const TexelSite& site) {
   const Image& image = texture.levels[level];
   return filter == TextureFilter::Nearest ? sample_nearest(image, level, state, s, t, recorder, site)
                                           : sample_linear(image, level, state, s, t, recorder, site);
@@ -144,8 +147,7 @@ glm::vec4 sample_texture(const Texture& texture, const SamplerState& state, floa
   s = safe_coordinate(s);
   t = safe_coordinate(t);
   // Section 8.14: c = 0.5 only for a LINEAR magnification with a NEAREST_MIPMAP_* minification.
-  const float c = (state.mag_filter == TextureFilter::Linear &&
-                   state.min_filter == TextureFilter::NearestMipmapNearest)
+  const float c = (state.mag_filter == TextureFilter::Linear && state.min_filter == TextureFilter::NearestMipmapNearest)
                       ? 0.5f
                       : 0.0f;
   if (lambda <= c) return sample_level(texture, 0, state.mag_filter, state, s, t, recorder, site);
@@ -160,12 +162,13 @@ glm::vec4 sample_texture(const Texture& texture, const SamplerState& state, floa
       // Equation 8.10: d = ceil(lambda + 1/2) - 1 for lambda > 1/2, else the base level.
       unsigned d = 0;
       if (lambda > 0.5f) d = static_cast<unsigned>(std::min(std::ceil(lambda + 0.5f) - 1.0f, static_cast<float>(q)));
-      const TextureFilter filter = state.min_filter == TextureFilter::NearestMipmapNearest ? TextureFilter::Nearest
-                                                                                             : TextureFilter::Linear;
+      const TextureFilter filter =
+          state.min_filter == TextureFilter::NearestMipmapNearest ? TextureFilter::Nearest : TextureFilter::Linear;
       return sample_level(texture, d, filter, state, s, t, recorder, site);
     }
     case TextureFilter::LinearMipmapLinear: {
-      if (lambda >= static_cast<float>(q)) return sample_level(texture, q, TextureFilter::Linear, state, s, t, recorder, site);
+      if (lambda >= static_cast<float>(q))
+        return sample_level(texture, q, TextureFilter::Linear, state, s, t, recorder, site);
       const float floor_lambda = std::floor(lambda);
       const unsigned d1 = static_cast<unsigned>(floor_lambda);
       const float f = lambda - floor_lambda;

@@ -54,8 +54,7 @@ const char* to_string(TextureWrap wrap);
 
 // lambda = log2(rho) for one 2x2 quad. Derivatives are in normalised coordinates (s, t) per pixel;
 // the level-0 size scales them to texels. Returns -inf-safe values (rho = 0 gives -128).
-float compute_lod(const SamplerState& state, int width, int height, float dsdx, float dtdx,
-                  float dsdy, float dtdy);
+float compute_lod(const SamplerState& state, int width, int height, float dsdx, float dtdx, float dsdy, float dtdy);
 
 // Samples `texture` at (s, t) with level of detail lambda, recording every texel read.
 // `texture_id` and the pixel and triangle in `site` go into the TexelAccess events.

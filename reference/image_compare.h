@@ -15,14 +15,14 @@ namespace rastrace {
 
 struct ImageDifference {
   std::uint64_t pixels = 0;
-  std::uint64_t covered = 0;             // covered in either image
-  std::uint64_t coverage_differs = 0;    // covered in exactly one image
+  std::uint64_t covered = 0;           // covered in either image
+  std::uint64_t coverage_differs = 0;  // covered in exactly one image
   // ... of which at centres within 1/256 pixel of an edge but not on it: a rasterizer that does
   // not snap vertices to 1/256 pixel (softpipe) may decide these either way.
   std::uint64_t coverage_differs_near_edge = 0;
-  std::uint64_t coverage_differs_off_edge = 0;  // ... neither on nor near an edge (needs the plane)
+  std::uint64_t coverage_differs_off_edge = 0;                // ... neither on nor near an edge (needs the plane)
   std::uint64_t diff_gt_1 = 0, diff_gt_2 = 0, diff_gt_8 = 0;  // covered pixels, any channel
-  std::uint64_t diff_gt_1_off_edge = 0;  // ... of diff_gt_1, centres neither on nor near an edge
+  std::uint64_t diff_gt_1_off_edge = 0;                       // ... of diff_gt_1, centres neither on nor near an edge
   int max_difference = 0;
   double psnr = 0.0;        // dB, RGB over the covered pixels
   double psnr_image = 0.0;  // dB, OpenImageIO's over the whole image (RGB)

@@ -59,11 +59,16 @@ void validate(const Scene& scene) {
 
 GLenum gl_filter(TextureFilter filter) {
   switch (filter) {
-    case TextureFilter::Nearest: return GL_NEAREST;
-    case TextureFilter::Linear: return GL_LINEAR;
-    case TextureFilter::NearestMipmapNearest: return GL_NEAREST_MIPMAP_NEAREST;
-    case TextureFilter::LinearMipmapNearest: return GL_LINEAR_MIPMAP_NEAREST;
-    case TextureFilter::LinearMipmapLinear: return GL_LINEAR_MIPMAP_LINEAR;
+    case TextureFilter::Nearest:
+      return GL_NEAREST;
+    case TextureFilter::Linear:
+      return GL_LINEAR;
+    case TextureFilter::NearestMipmapNearest:
+      return GL_NEAREST_MIPMAP_NEAREST;
+    case TextureFilter::LinearMipmapNearest:
+      return GL_LINEAR_MIPMAP_NEAREST;
+    case TextureFilter::LinearMipmapLinear:
+      return GL_LINEAR_MIPMAP_LINEAR;
   }
   return GL_LINEAR;
 }

@@ -42,8 +42,8 @@ struct ReferenceOptions {
 struct ReferenceImage {
   int width = 0;
   int height = 0;
-  std::vector<std::uint8_t> rgba;  // row 0 at the top
-  std::string renderer;            // GL_RENDERER, e.g. "softpipe" or "llvmpipe (LLVM 15.0.6, 256 bits)"
+  std::vector<std::uint8_t> rgba;   // row 0 at the top
+  std::string renderer;             // GL_RENDERER, e.g. "softpipe" or "llvmpipe (LLVM 15.0.6, 256 bits)"
   double best_frame_seconds = 0.0;  // the fastest of `frames` frames, glFinish included
   double first_frame_seconds = 0.0;
   // The fastest frame in CPU time of the child process (all its threads): with llvmpipe's

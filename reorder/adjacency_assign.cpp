@@ -50,7 +50,8 @@ BipartiteMatching hopcroft_karp(const Bipartite& g) {
       const std::uint32_t u = queue[head];
       for (std::uint32_t k = g.offsets[u]; k < g.offsets[u + 1]; ++k) {
         const std::uint32_t w = m.match_right[g.targets[k]];
-        if (w == kNone) found = true;
+        if (w == kNone)
+          found = true;
         else if (dist[w] == kInf) {
           dist[w] = dist[u] + 1;
           queue.push_back(w);
@@ -200,7 +201,8 @@ FaceAssignment assign_uncovered_faces(const AdjacencyDual& dual, const std::vect
       }
     }
     const BipartiteMatching n = hopcroft_karp(g2);
-    if (n.size != g2.left) throw std::logic_error("assignment: the cover is not minimal (a component has no free face)");
+    if (n.size != g2.left)
+      throw std::logic_error("assignment: the cover is not minimal (a component has no free face)");
     std::vector<std::uint32_t> cover_n(g1.right, kNone);  // N at the level of cover faces
     for (std::uint32_t k = 0; k < g2.left; ++k) cover_n[via[n.match_left[k]]] = g2.targets[n.match_left[k]];
 

@@ -21,8 +21,10 @@ CoverBound adjacency_cover_lower_bound(const Mesh& mesh, const AdjacencyDual& du
   std::uint32_t N = 0;
   bool has_boundary = false;
   for (std::uint32_t v = 0; v < V; ++v) {
-    if (dual.boundary_vertex[v]) has_boundary = true;
-    else node_of[v] = N++;
+    if (dual.boundary_vertex[v])
+      has_boundary = true;
+    else
+      node_of[v] = N++;
   }
   const std::uint32_t sink = has_boundary ? N++ : kNone;
   for (std::uint32_t v = 0; v < V; ++v)

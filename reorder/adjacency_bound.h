@@ -23,11 +23,11 @@
 namespace rastrace {
 
 struct CoverBound {
-  std::uint64_t dual_edges = 0;      // |E'|
-  std::uint64_t odd_vertices = 0;    // |V_odd| (the sink included when it is odd)
-  std::uint64_t pruned_edges = 0;    // edges of G_prune given to the matching
-  std::uint64_t join_edges = 0;      // |minimum V_odd-join|
-  double bound = 0.0;                // (|E'| + |join|) / 3
+  std::uint64_t dual_edges = 0;    // |E'|
+  std::uint64_t odd_vertices = 0;  // |V_odd| (the sink included when it is odd)
+  std::uint64_t pruned_edges = 0;  // edges of G_prune given to the matching
+  std::uint64_t join_edges = 0;    // |minimum V_odd-join|
+  double bound = 0.0;              // (|E'| + |join|) / 3
   double seconds = 0.0;
 };
 

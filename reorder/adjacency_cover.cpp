@@ -217,8 +217,8 @@ CoverResult find_adjacency_cover(const AdjacencyDual& dual, const CoverParams& p
   result.forced = dual.face_count - interior;
   result.greedy_size = dual.face_count - set.size();
 
-  const std::uint64_t iterations = params.max_iterations >= 0 ? static_cast<std::uint64_t>(params.max_iterations)
-                                                               : 20ull * dual.face_count;
+  const std::uint64_t iterations =
+      params.max_iterations >= 0 ? static_cast<std::uint64_t>(params.max_iterations) : 20ull * dual.face_count;
   Random random{params.seed};
   Progress progress("cover", iterations);
   constexpr std::uint64_t kChunk = 4096;

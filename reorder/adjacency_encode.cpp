@@ -121,9 +121,12 @@ DecodedPrimitive decode_adjacency_primitive(const std::uint32_t* six) {
   const bool degenerate = d.cover[0] == d.cover[1] || d.cover[1] == d.cover[2] || d.cover[0] == d.cover[2];
   for (unsigned p = 0; p < 3; ++p) {
     const std::uint32_t start = six[2 * p], end = six[(2 * p + 2) % 6], across = six[2 * p + 1];
-    if (degenerate || across == end) d.role[p] = EdgeRole::Skipped;
-    else if (across == start) d.role[p] = EdgeRole::Boundary;
-    else d.role[p] = EdgeRole::Interior;
+    if (degenerate || across == end)
+      d.role[p] = EdgeRole::Skipped;
+    else if (across == start)
+      d.role[p] = EdgeRole::Boundary;
+    else
+      d.role[p] = EdgeRole::Interior;
   }
   d.has_assigned = d.role[0] == EdgeRole::Interior;
   return d;

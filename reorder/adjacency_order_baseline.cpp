@@ -12,10 +12,14 @@ namespace rastrace {
 
 const char* to_string(AdjacencyOrder order) {
   switch (order) {
-    case AdjacencyOrder::Careful: return "careful";
-    case AdjacencyOrder::Fast: return "fast";
-    case AdjacencyOrder::Baseline: return "baseline";
-    case AdjacencyOrder::BaselineMesh: return "baseline-mesh";
+    case AdjacencyOrder::Careful:
+      return "careful";
+    case AdjacencyOrder::Fast:
+      return "fast";
+    case AdjacencyOrder::Baseline:
+      return "baseline";
+    case AdjacencyOrder::BaselineMesh:
+      return "baseline-mesh";
   }
   return "?";
 }
@@ -81,8 +85,10 @@ std::vector<std::uint32_t> order_adjacency(AdjacencyOrder order, const Mesh& mes
       return order_adjacency_careful(primitives, static_cast<std::uint32_t>(mesh.vertex_count()), cache_size);
     case AdjacencyOrder::Fast:
       return order_adjacency_fast(primitives, static_cast<std::uint32_t>(mesh.vertex_count()), cache_size);
-    case AdjacencyOrder::Baseline: return order_adjacency_baseline(mesh, primitives, cache_size);
-    case AdjacencyOrder::BaselineMesh: return order_adjacency_baseline_mesh(mesh, primitives, cache_size);
+    case AdjacencyOrder::Baseline:
+      return order_adjacency_baseline(mesh, primitives, cache_size);
+    case AdjacencyOrder::BaselineMesh:
+      return order_adjacency_baseline_mesh(mesh, primitives, cache_size);
   }
   return {};
 }

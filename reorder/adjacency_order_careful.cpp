@@ -27,16 +27,25 @@ constexpr std::size_t kBreadth[kDepth] = {3, 2};
 struct Candidate {
   std::uint32_t vertex;
   std::uint32_t live;  // primitives left in its ring
-  std::int64_t cost;  // in 1/K misses
+  std::int64_t cost;   // in 1/K misses
 };
 
 class CarefulOrder {
  public:
   CarefulOrder(const AdjacencyPrimitives& primitives, std::uint32_t vertex_count, unsigned cache_size)
-      : P_(static_cast<std::uint32_t>(primitives.size())), V_(vertex_count), k_(cache_size),
-        six_(primitives.indices.data()), live_(vertex_count, 0), offsets_(vertex_count + 1, 0),
-        stamp_(vertex_count, 0), time_(std::uint64_t{cache_size} + 1), fifo_(cache_size, kNone), emitted_(P_, 0),
-        sim_mark_(vertex_count, 0), sim_stamp_(vertex_count, 0), live_mark_(vertex_count, 0),
+      : P_(static_cast<std::uint32_t>(primitives.size())),
+        V_(vertex_count),
+        k_(cache_size),
+        six_(primitives.indices.data()),
+        live_(vertex_count, 0),
+        offsets_(vertex_count + 1, 0),
+        stamp_(vertex_count, 0),
+        time_(std::uint64_t{cache_size} + 1),
+        fifo_(cache_size, kNone),
+        emitted_(P_, 0),
+        sim_mark_(vertex_count, 0),
+        sim_stamp_(vertex_count, 0),
+        live_mark_(vertex_count, 0),
         sim_live_(vertex_count, 0) {
     // vertex -> primitives referencing it anywhere among their six indices (each once).
     for (std::uint32_t p = 0; p < P_; ++p)
@@ -90,7 +99,7 @@ class CarefulOrder {
     std::vector<Candidate> candidates;
     std::vector<std::uint32_t> sequence, lives;
     std::vector<std::pair<std::uint32_t, std::uint64_t>> stamps;  // vertex, previous stamp
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> slots;    // FIFO slot, previous vertex
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> slots;   // FIFO slot, previous vertex
     std::uint64_t time = 0;
   };
 
@@ -130,8 +139,10 @@ class CarefulOrder {
         for (unsigned c = 0; c < 6; ++c) {
           const std::uint32_t w = six_[6 * ring_[i] + c];
           if (!first_time(ring_[i], c)) continue;
-          if (is_resident(w)) age = std::max(age, now - stamp_of(w));
-          else ++m;
+          if (is_resident(w))
+            age = std::max(age, now - stamp_of(w));
+          else
+            ++m;
         }
         if (m < fewest || (m == fewest && age > oldest)) {
           fewest = m;

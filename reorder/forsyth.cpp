@@ -23,8 +23,8 @@
 #include <emmintrin.h>
 #endif
 
-#include "reorder/vertex_faces.h"
 #include "reorder/ordering.h"
+#include "reorder/vertex_faces.h"
 
 namespace rastrace {
 
@@ -49,16 +49,17 @@ struct ScoreTables {
   float by_position[kModelCache + 4][kValenceTable];
   ScoreTables() {
     for (int p = 0; p < kModelCache; ++p)
-      cache[p] = p < 3 ? kLastTriangleScore
-                       : std::pow(1.0f - float(p - 3) / float(kModelCache - 3), kCacheDecayPower);
+      cache[p] = p < 3 ? kLastTriangleScore : std::pow(1.0f - float(p - 3) / float(kModelCache - 3), kCacheDecayPower);
     valence[0] = 0.0f;
-    for (std::uint32_t n = 1; n < kValenceTable; ++n) valence[n] = kValenceBoostScale * std::pow(float(n), -kValenceBoostPower);
+    for (std::uint32_t n = 1; n < kValenceTable; ++n)
+      valence[n] = kValenceBoostScale * std::pow(float(n), -kValenceBoostPower);
     for (int p = -1; p < kModelCache + 3; ++p)
       for (std::uint32_t n = 0; n < kValenceTable; ++n) by_position[p + 1][n] = formula(p < kModelCache ? p : -1, n);
   }
   float formula(int position, std::uint32_t live) const {
     if (live == 0) return -1.0f;
-    const float boost = live < kValenceTable ? valence[live] : kValenceBoostScale * std::pow(float(live), -kValenceBoostPower);
+    const float boost =
+        live < kValenceTable ? valence[live] : kValenceBoostScale * std::pow(float(live), -kValenceBoostPower);
     return (position >= 0 ? cache[position] : 0.0f) + boost;
   }
   float score(int position, std::uint32_t live) const {

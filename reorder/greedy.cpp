@@ -154,7 +154,10 @@ class LruCache {
   class Sim {
    public:
     explicit Sim(LruCache& cache)
-        : slot_of_(cache.slot_of_.data()), slots_(cache.sim_slots_.data()), undo_(cache.undo_.data()), list_(cache.list_) {
+        : slot_of_(cache.slot_of_.data()),
+          slots_(cache.sim_slots_.data()),
+          undo_(cache.undo_.data()),
+          list_(cache.list_) {
       std::memcpy(slots_, cache.slots_.data(), cache.slots_.size() * sizeof(Slot));
     }
     Sim(const Sim&) = delete;
@@ -210,7 +213,8 @@ class Greedy {
     if (k_ == 0) throw InputError("greedy: cache size 0: expected at least 1 entry");
     const std::uint32_t F = t_.face_count;
     if (F >= kMaxFaces)
-      throw InputError("greedy: " + std::to_string(F) + " faces: at most " + std::to_string(kMaxFaces - 1) + " supported");
+      throw InputError("greedy: " + std::to_string(F) + " faces: at most " + std::to_string(kMaxFaces - 1) +
+                       " supported");
     unvisited_neighbors_.resize(F);
     for (std::uint32_t f = 0; f < F; ++f) unvisited_neighbors_[f] = static_cast<std::uint8_t>(t_.neighbor_count(f));
     for (std::uint32_t f = F; f-- > 0;) buckets_[unvisited_neighbors_[f]].push_back(f);
@@ -471,7 +475,7 @@ class Greedy {
   std::array<std::vector<std::uint32_t>, 4> buckets_;
   std::vector<std::uint32_t> queue_, sim_queue_;
   std::vector<FaceRecord> faces_;  // one per face, then the border record
-  std::uint32_t border_ = 0;        // the border record's corner
+  std::uint32_t border_ = 0;       // the border record's corner
   std::size_t queue_head_ = 0;
   GreedyStats stats_;
 };

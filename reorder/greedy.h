@@ -25,8 +25,8 @@
 namespace rastrace {
 
 struct GreedyStats {
-  std::uint64_t simulations = 0;  // lookahead simulations run (paper: about 2.9 per face)
-  std::uint64_t restarts = 0;     // strips ended by the lookahead
+  std::uint64_t simulations = 0;   // lookahead simulations run (paper: about 2.9 per face)
+  std::uint64_t restarts = 0;      // strips ended by the lookahead
   std::uint64_t from_scratch = 0;  // restarts with an empty queue
 };
 

@@ -46,7 +46,8 @@ struct GridOrderBuilder {
   void columns(int x0, int x1, int y0, int y1) {
     if (x1 - x0 + 1 < cache) {
       if (2 * (x1 - x0) + 1 > cache) {
-        for (int x = x0; x < x1; ++x) out.indices.insert(out.indices.end(), {vertex(x, y0), vertex(x, y0), vertex(x + 1, y0)});
+        for (int x = x0; x < x1; ++x)
+          out.indices.insert(out.indices.end(), {vertex(x, y0), vertex(x, y0), vertex(x + 1, y0)});
       }
       for (int y = y0; y < y1; ++y) {
         for (int x = x0; x < x1; ++x) {
@@ -71,10 +72,10 @@ void check_grid_layout(const Mesh& mesh) {
   const int w = mesh.grid->width, h = mesh.grid->height;
   const std::size_t quads = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
   if (mesh.face_count() != 2 * quads || mesh.vertex_count() != static_cast<std::size_t>(w + 1) * (h + 1))
-    throw InputError("grid order: mesh '" + mesh.name + "' has " + std::to_string(mesh.face_count()) +
-                     " faces and " + std::to_string(mesh.vertex_count()) + " vertices, expected " +
-                     std::to_string(2 * quads) + " and " + std::to_string((w + 1) * (h + 1)) + " for a " +
-                     std::to_string(w) + "x" + std::to_string(h) + " grid");
+    throw InputError("grid order: mesh '" + mesh.name + "' has " + std::to_string(mesh.face_count()) + " faces and " +
+                     std::to_string(mesh.vertex_count()) + " vertices, expected " + std::to_string(2 * quads) +
+                     " and " + std::to_string((w + 1) * (h + 1)) + " for a " + std::to_string(w) + "x" +
+                     std::to_string(h) + " grid");
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       const auto v = [w](int vx, int vy) { return static_cast<std::uint32_t>((w + 1) * vy + vx); };
@@ -83,8 +84,8 @@ void check_grid_layout(const Mesh& mesh) {
       const std::uint32_t* i = mesh.indices.data() + f;
       if (i[0] != a || i[1] != b || i[2] != c || i[3] != c || i[4] != b || i[5] != d)
         throw InputError("grid order: mesh '" + mesh.name + "' face " + std::to_string(f / 3) +
-                         " does not follow the grid layout of quad (" + std::to_string(x) + ", " +
-                         std::to_string(y) + ")");
+                         " does not follow the grid layout of quad (" + std::to_string(x) + ", " + std::to_string(y) +
+                         ")");
     }
   }
 }

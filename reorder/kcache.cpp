@@ -23,8 +23,8 @@
 // bunny00 0.636); 16x16 grid: 0.627, 0.596, 0.564 at FIFO 12, 16, 20. Deterministic.
 #include <algorithm>
 
-#include "reorder/vertex_faces.h"
 #include "reorder/ordering.h"
+#include "reorder/vertex_faces.h"
 
 namespace rastrace {
 

@@ -509,7 +509,7 @@ class Local {
     const std::int64_t lo = !seg[0].reversed && seg[0].lo == 0 ? std::int64_t(seg[0].size()) : 0;
     const Segment& last = seg[count - 1];
     const std::int64_t hi = !last.reversed && last.start == last.lo && last.hi == m_ - 1 ? std::int64_t(last.start) - 1
-                                                                                        : std::int64_t(m_) - 1;
+                                                                                         : std::int64_t(m_) - 1;
     const std::int64_t before = cost_;
     scratch_.resize(m_);
     for (int i = 0; i < count; ++i)
@@ -528,7 +528,8 @@ class Local {
     for (std::int64_t q = lo; q <= hi; ++q) pos_[F_[std::size_t(q)]] = std::uint32_t(q);
     for (int dir = 0; dir < 2; ++dir) {
       const bool reverse = dir == 1;
-      std::int64_t q = reverse ? std::min<std::int64_t>(std::int64_t(m_) - 1, hi + 1) : std::max<std::int64_t>(0, lo - 1);
+      std::int64_t q =
+          reverse ? std::min<std::int64_t>(std::int64_t(m_) - 1, hi + 1) : std::max<std::int64_t>(0, lo - 1);
       load(q, reverse);
       unsigned sync[kCaches] = {0, 0, 0};
       for (; q >= 0 && q < std::int64_t(m_); q += reverse ? -1 : 1) {

@@ -16,8 +16,8 @@
 // forward and the reverse traversal (3 cache sizes each): the cache state before a slice point
 // is rebuilt from the last k stored misses, and simulation stops once k successive misses agree
 // with the stored ones (exact for k <= 255; larger caches are still checked by the true cost
-// before a change is kept). After a change only the window around it is re-simulated. x positions in the middle of a strip whose three faces miss fewer than 3
-// times in total are pruned.
+// before a change is kept). After a change only the window around it is re-simulated. x positions in the middle of a
+// strip whose three faces miss fewer than 3 times in total are pruned.
 //
 // Budget: ReorderParams::iteration_budget x positions (reproducible), capped by
 // time_budget_seconds. Expect a 2-6% lower ACMR than greedy (Hoppe: 3-6%), about 0.60-0.61 on
@@ -34,14 +34,14 @@
 namespace rastrace {
 
 struct LocalStats {
-  std::uint64_t iterations = 0;     // x positions visited
-  std::uint64_t evaluations = 0;    // perturbation costs evaluated
-  std::uint64_t applied = 0;        // perturbations applied
-  std::uint64_t rejected = 0;       // applied perturbations undone because the true cost did not drop
-  std::uint64_t passes = 0;         // passes over all faces started
-  std::int64_t initial_cost = 0;    // scaled cost before and after
+  std::uint64_t iterations = 0;   // x positions visited
+  std::uint64_t evaluations = 0;  // perturbation costs evaluated
+  std::uint64_t applied = 0;      // perturbations applied
+  std::uint64_t rejected = 0;     // applied perturbations undone because the true cost did not drop
+  std::uint64_t passes = 0;       // passes over all faces started
+  std::int64_t initial_cost = 0;  // scaled cost before and after
   std::int64_t final_cost = 0;
-  bool converged = false;           // a whole pass found nothing
+  bool converged = false;  // a whole pass found nothing
 };
 
 // Improves `order` in place (FIFO, params.cache_size).

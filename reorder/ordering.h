@@ -20,8 +20,8 @@ struct ReorderParams {
   // local: perturbation searches (one per face position visited); 0 = until no improvement is
   // found. The primary, reproducible control; time_budget_seconds is only a safety cap.
   std::uint64_t iteration_budget = 0;
-  std::string texgroup_base = "strip";     // texgroup: the algorithm ordering each group
-  std::string texgroup_regions = "auto";   // texgroup: auto, quadrant, chart or texture
+  std::string texgroup_base = "strip";    // texgroup: the algorithm ordering each group
+  std::string texgroup_regions = "auto";  // texgroup: auto, quadrant, chart or texture
 };
 
 struct Ordering {

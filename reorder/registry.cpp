@@ -33,8 +33,7 @@ const ReorderAlgorithm& find_reorder_algorithm(const std::string& name) {
   for (const ReorderAlgorithm& algorithm : reorder_algorithms())
     if (algorithm.name == name) return algorithm;
   std::string known;
-  for (const ReorderAlgorithm& algorithm : reorder_algorithms())
-    known += (known.empty() ? "" : ", ") + algorithm.name;
+  for (const ReorderAlgorithm& algorithm : reorder_algorithms()) known += (known.empty() ? "" : ", ") + algorithm.name;
   throw InputError("unknown ordering algorithm '" + name + "': expected one of " + known);
 }
 
@@ -70,18 +69,17 @@ std::vector<std::uint32_t> primitive_materials(const Mesh& mesh, const Ordering&
                              mesh.material_of(f));
   std::vector<std::uint32_t> materials;
   std::uint32_t previous = 0;
-  for_each_triangle(ordering.indices, ordering.type, ordering.restart_index,
-                    [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-                      if (a != b && b != c && a != c) {
-                        const auto found = material_of_face.find(key(a, b, c));
-                        if (found == material_of_face.end())
-                          throw InputError(mesh.name + ": the ordering draws triangle (" + std::to_string(a) + ", " +
-                                           std::to_string(b) + ", " + std::to_string(c) +
-                                           "), which is not a face of the mesh");
-                        previous = found->second;
-                      }
-                      materials.push_back(previous);
-                    });
+  for_each_triangle(
+      ordering.indices, ordering.type, ordering.restart_index, [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+        if (a != b && b != c && a != c) {
+          const auto found = material_of_face.find(key(a, b, c));
+          if (found == material_of_face.end())
+            throw InputError(mesh.name + ": the ordering draws triangle (" + std::to_string(a) + ", " +
+                             std::to_string(b) + ", " + std::to_string(c) + "), which is not a face of the mesh");
+          previous = found->second;
+        }
+        materials.push_back(previous);
+      });
   return materials;
 }
 

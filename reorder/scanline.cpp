@@ -44,7 +44,8 @@ Ordering reorder_scanline(const Mesh& mesh, const ReorderParams& /*params*/) {
   std::vector<Key> keys(faces);
   for (std::size_t f = 0; f < faces; ++f) {
     const glm::vec3 c = (mesh.positions[mesh.indices[3 * f]] + mesh.positions[mesh.indices[3 * f + 1]] +
-                         mesh.positions[mesh.indices[3 * f + 2]]) / 3.0f;
+                         mesh.positions[mesh.indices[3 * f + 2]]) /
+                        3.0f;
     // Non-finite coordinates (a NaN in a file) must still give a strict weak order: row 0, x 0.
     const double t = extent[across] > 0 ? (double(c[across]) - lo[across]) / extent[across] : 0.0;
     const double row = std::isfinite(t) ? std::clamp(std::floor(t * rows), 0.0, rows - 1) : 0.0;

@@ -46,7 +46,8 @@ Cells quantized_centroids(const Mesh& mesh) {
   const double scale = double(1u << kBits);
   for (std::size_t f = 0; f < faces; ++f) {
     const glm::vec3 c = (mesh.positions[mesh.indices[3 * f]] + mesh.positions[mesh.indices[3 * f + 1]] +
-                         mesh.positions[mesh.indices[3 * f + 2]]) / 3.0f;
+                         mesh.positions[mesh.indices[3 * f + 2]]) /
+                        3.0f;
     for (int d = 0; d < cells.dims; ++d) {
       const int a = axes[d];
       const double t = (double(c[a]) - lo[a]) / extent[a] * scale;
@@ -108,9 +109,7 @@ Ordering curve_ordering(const Mesh& mesh, Index index) {
 
 }  // namespace
 
-Ordering reorder_morton(const Mesh& mesh, const ReorderParams& /*params*/) {
-  return curve_ordering(mesh, interleave);
-}
+Ordering reorder_morton(const Mesh& mesh, const ReorderParams& /*params*/) { return curve_ordering(mesh, interleave); }
 
 Ordering reorder_hilbert(const Mesh& mesh, const ReorderParams& /*params*/) {
   return curve_ordering(mesh, hilbert_index);

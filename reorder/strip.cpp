@@ -23,7 +23,6 @@ std::uint32_t neighbor_across(const Mesh& mesh, const MeshTopology& topology, st
 
 }  // namespace
 
-
 StripStats strip_stats(std::span<const std::uint32_t> indices, PrimitiveType type, std::uint32_t restart_index) {
   StripStats stats;
   stats.indices = indices.size();
@@ -149,8 +148,13 @@ namespace {
 class StripCover {
  public:
   StripCover(const Mesh& mesh, const MeshTopology& topology)
-      : idx_(mesh.indices.data()), topology_(topology), F_(topology.face_count), mask_(F_, 0), partner_(F_),
-        path_(F_, 0), pos_(F_, 0) {
+      : idx_(mesh.indices.data()),
+        topology_(topology),
+        F_(topology.face_count),
+        mask_(F_, 0),
+        partner_(F_),
+        path_(F_, 0),
+        pos_(F_, 0) {
     for (std::uint32_t f = 0; f < F_; ++f) partner_[f] = f;
     linkable_.resize(F_);
     for (std::uint32_t f = 0; f < F_; ++f)
@@ -497,9 +501,9 @@ class StripCover {
   const std::uint32_t* idx_;
   const MeshTopology& topology_;
   std::uint32_t F_;
-  std::vector<std::uint8_t> mask_;      // linked edge slots
-  std::vector<std::uint8_t> linkable_;  // edge slots that may be linked
-  std::vector<std::uint32_t> partner_;  // for a strip end: the other end (itself when alone)
+  std::vector<std::uint8_t> mask_;                       // linked edge slots
+  std::vector<std::uint8_t> linkable_;                   // edge slots that may be linked
+  std::vector<std::uint32_t> partner_;                   // for a strip end: the other end (itself when alone)
   std::vector<std::uint32_t> path_, pos_, head_, tail_;  // strip ids and positions (see chain)
   std::vector<std::uint32_t> stamp_, seen_, queue_;
   static constexpr std::uint8_t kDirtyEnd = 1, kDirtySwap = 2;  // what to retry at a face

@@ -15,12 +15,16 @@ namespace {
 std::string texture_key(const Material& material) {
   const TextureSource& source = material.texture_source;
   switch (source.kind) {
-    case TextureSource::Kind::None: return "untextured";
-    case TextureSource::Kind::File: return source.path;
+    case TextureSource::Kind::None:
+      return "untextured";
+    case TextureSource::Kind::File:
+      return source.path;
     case TextureSource::Kind::Checker:
       return "checker " + std::to_string(source.size) + "/" + std::to_string(source.checks);
-    case TextureSource::Kind::FourColour: return "four-colour " + std::to_string(source.size);
-    case TextureSource::Kind::Gradient: return "gradient " + std::to_string(source.size);
+    case TextureSource::Kind::FourColour:
+      return "four-colour " + std::to_string(source.size);
+    case TextureSource::Kind::Gradient:
+      return "gradient " + std::to_string(source.size);
   }
   return "untextured";
 }
@@ -94,8 +98,7 @@ TextureGroups find_texture_groups(const Mesh& mesh, const std::string& mode) {
     const auto [it, added] = texture_ids.emplace(key, static_cast<std::uint32_t>(texture_names.size()));
     if (added) {
       texture_names.push_back(key);
-      texture_is_four_colour.push_back(material &&
-                                       material->texture_source.kind == TextureSource::Kind::FourColour);
+      texture_is_four_colour.push_back(material && material->texture_source.kind == TextureSource::Kind::FourColour);
     }
     texture_of_face[f] = it->second;
   }
@@ -119,12 +122,13 @@ TextureGroups find_texture_groups(const Mesh& mesh, const std::string& mode) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> group_ids;
   std::vector<std::uint32_t> texture_of_group;
   for (std::size_t f = 0; f < faces; ++f) {
-    const auto [it, added] =
-        group_ids.emplace(std::make_pair(texture_of_face[f], region[f]), static_cast<std::uint32_t>(groups.labels.size()));
+    const auto [it, added] = group_ids.emplace(std::make_pair(texture_of_face[f], region[f]),
+                                               static_cast<std::uint32_t>(groups.labels.size()));
     if (added) {
       const bool quadrant = mode == "quadrant" || (mode == "auto" && texture_is_four_colour[texture_of_face[f]]);
       std::string label = texture_names[texture_of_face[f]];
-      if (mode != "texture") label += (quadrant ? " quadrant " : " chart ") + std::to_string(quadrant ? region[f] : it->second);
+      if (mode != "texture")
+        label += (quadrant ? " quadrant " : " chart ") + std::to_string(quadrant ? region[f] : it->second);
       groups.labels.push_back(label);
       texture_of_group.push_back(texture_of_face[f]);
     }
@@ -202,7 +206,8 @@ Ordering reorder_texgroup(const Mesh& mesh, const ReorderParams& params) {
     }
     Ordering ordered = base.run(part, params);
     for (std::uint32_t& index : ordered.indices)
-      if (!(ordered.type == PrimitiveType::TriangleStrip && index == ordered.restart_index)) index = global_of_local[index];
+      if (!(ordered.type == PrimitiveType::TriangleStrip && index == ordered.restart_index))
+        index = global_of_local[index];
     for (const std::uint32_t v : global_of_local) local_of_vertex[v] = kNoFace;
 
     if (first) {
@@ -210,9 +215,12 @@ Ordering reorder_texgroup(const Mesh& mesh, const ReorderParams& params) {
       result.restart_index = ordered.restart_index;
       first = false;
     }
-    for (const std::uint32_t local_face : ordered.face_order) result.face_order.push_back(faces_of_group[g][local_face]);
-    if (ordered.type == PrimitiveType::TriangleStrip) append_strip(result, ordered);
-    else result.indices.insert(result.indices.end(), ordered.indices.begin(), ordered.indices.end());
+    for (const std::uint32_t local_face : ordered.face_order)
+      result.face_order.push_back(faces_of_group[g][local_face]);
+    if (ordered.type == PrimitiveType::TriangleStrip)
+      append_strip(result, ordered);
+    else
+      result.indices.insert(result.indices.end(), ordered.indices.begin(), ordered.indices.end());
   }
   return result;
 }

@@ -16,8 +16,8 @@
 #include <algorithm>
 #include <memory>
 
-#include "reorder/vertex_faces.h"
 #include "reorder/ordering.h"
+#include "reorder/vertex_faces.h"
 
 namespace rastrace {
 
@@ -34,7 +34,8 @@ Ordering reorder_tipsy(const Mesh& mesh, const ReorderParams& params) {
   // The dead-end stack; the entries a fan pushes are also that fan's candidate list.
   // Never read above its top, so left uninitialised (it is the largest array here). Pushes are
   // branch-free (written, then counted or not), hence the spare entry.
-  const std::unique_ptr<std::uint32_t[]> dead_end = std::make_unique_for_overwrite<std::uint32_t[]>(3 * std::size_t(face_count) + 1);
+  const std::unique_ptr<std::uint32_t[]> dead_end =
+      std::make_unique_for_overwrite<std::uint32_t[]>(3 * std::size_t(face_count) + 1);
   std::size_t dead_end_size = 0;
 
   Ordering ordering;

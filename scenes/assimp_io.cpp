@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <string>
 
-#include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 #include "core/error.h"
 #include "scenes/mesh_io.h"
@@ -34,14 +34,17 @@ void read_texture(const std::string& path, const aiScene& scene, const aiMateria
                               " holds raw texels; expected an encoded image (PNG, JPEG...)");
     const auto* bytes = reinterpret_cast<const std::uint8_t*>(embedded->pcData);
     material.texture_source.kind = TextureSource::Kind::File;
-    material.texture_source.embedded = std::make_shared<const std::vector<std::uint8_t>>(bytes, bytes + embedded->mWidth);
+    material.texture_source.embedded =
+        std::make_shared<const std::vector<std::uint8_t>>(bytes, bytes + embedded->mWidth);
     // The format hint ("png", "jpg") gives the decoder; the name says where the image came from.
     std::string hint = embedded->achFormatHint;
-    if (hint.empty() || hint.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789") != std::string::npos) hint = "png";
+    if (hint.empty() || hint.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789") != std::string::npos)
+      hint = "png";
     material.texture_source.path = path + "#" + name + "." + hint;
     return;
   }
-  if (name[0] == '*') throw_in_file(path, "material '" + material.name + "': embedded texture " + name + " not found in the file");
+  if (name[0] == '*')
+    throw_in_file(path, "material '" + material.name + "': embedded texture " + name + " not found in the file");
   for (char& c : name)
     if (c == '\\') c = '/';
   if (name.starts_with("file://")) name = name.substr(7);
@@ -61,9 +64,9 @@ Mesh load_with_assimp(const std::string& path) {
   if (fs::is_directory(path, error)) throw_in_file(path, "is a directory, expected a file");
   Assimp::Importer importer;
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene = importer.ReadFile(
-      path, aiProcess_JoinIdenticalVertices | aiProcess_Triangulate | aiProcess_SortByPType |
-                aiProcess_PreTransformVertices | aiProcess_ValidateDataStructure);
+  const aiScene* scene =
+      importer.ReadFile(path, aiProcess_JoinIdenticalVertices | aiProcess_Triangulate | aiProcess_SortByPType |
+                                  aiProcess_PreTransformVertices | aiProcess_ValidateDataStructure);
   if (!scene) throw_in_file(path, std::string("assimp cannot read it: ") + importer.GetErrorString());
   if (scene->mNumMeshes == 0) throw_in_file(path, "no triangle meshes in the file");
 
@@ -75,7 +78,8 @@ Mesh load_with_assimp(const std::string& path) {
     aiString name;
     if (source.Get(AI_MATKEY_NAME, name) == AI_SUCCESS) material.name = name.C_Str();
     aiColor4D colour(1.0f, 1.0f, 1.0f, 1.0f);
-    if (source.Get(AI_MATKEY_BASE_COLOR, colour) == AI_SUCCESS || source.Get(AI_MATKEY_COLOR_DIFFUSE, colour) == AI_SUCCESS)
+    if (source.Get(AI_MATKEY_BASE_COLOR, colour) == AI_SUCCESS ||
+        source.Get(AI_MATKEY_COLOR_DIFFUSE, colour) == AI_SUCCESS)
       material.diffuse = glm::vec4(colour.r, colour.g, colour.b, colour.a);
     float opacity = 1.0f;
     if (source.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS) material.diffuse.a = opacity;
@@ -110,7 +114,8 @@ Mesh load_with_assimp(const std::string& path) {
       for (unsigned k = 0; k < 3; ++k) {
         if (face.mIndices[k] >= source.mNumVertices)
           throw_in_file(path, "mesh " + std::to_string(m) + " face " + std::to_string(f) + ": index " +
-                                  std::to_string(face.mIndices[k]) + " >= vertex count " + std::to_string(source.mNumVertices));
+                                  std::to_string(face.mIndices[k]) + " >= vertex count " +
+                                  std::to_string(source.mNumVertices));
         mesh.indices.push_back(base + face.mIndices[k]);
       }
       mesh.face_material.push_back(source.mMaterialIndex);

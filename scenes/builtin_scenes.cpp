@@ -17,7 +17,9 @@ namespace {
 std::string data_file(const std::string& relative) {
   const std::filesystem::path path = std::filesystem::path(data_directory()) / relative;
   if (!std::filesystem::exists(path))
-    throw InputError(path.string() + ": no such file: the built-in scenes need the data folder (run scripts/setup.sh, or set RASTRACE_DATA)");
+    throw InputError(
+        path.string() +
+        ": no such file: the built-in scenes need the data folder (run scripts/setup.sh, or set RASTRACE_DATA)");
   return path.string();
 }
 
@@ -96,7 +98,8 @@ Scene make_builtin_scene(const std::string& name) {
     scene = spider_scene();
     frame(scene);
   } else {
-    throw InputError("builtin:" + name + ": no such built-in scene; expected builtin:grid, builtin:bunny or builtin:spider");
+    throw InputError("builtin:" + name +
+                     ": no such built-in scene; expected builtin:grid, builtin:bunny or builtin:spider");
   }
   load_scene_textures(scene);
   return scene;

@@ -1,8 +1,8 @@
 #include "scenes/mesh_stats.h"
 
 #include <algorithm>
-#include <string>
 #include <numeric>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -20,12 +20,14 @@ MeshStats compute_mesh_stats(const Mesh& mesh) {
   std::vector<std::tuple<int, std::string, int, int>> sources;
   for (const Material& m : mesh.materials)
     if (m.texture_source.kind != TextureSource::Kind::None)
-      sources.emplace_back(static_cast<int>(m.texture_source.kind), m.texture_source.path, m.texture_source.size, m.texture_source.checks);
+      sources.emplace_back(static_cast<int>(m.texture_source.kind), m.texture_source.path, m.texture_source.size,
+                           m.texture_source.checks);
   std::sort(sources.begin(), sources.end());
   stats.textures = static_cast<std::size_t>(std::unique(sources.begin(), sources.end()) - sources.begin());
   if (!mesh.positions.empty()) {
     stats.bounds_min = stats.bounds_max = mesh.positions[0];
-    for (const auto& p : mesh.positions) stats.bounds_min = glm::min(stats.bounds_min, p), stats.bounds_max = glm::max(stats.bounds_max, p);
+    for (const auto& p : mesh.positions)
+      stats.bounds_min = glm::min(stats.bounds_min, p), stats.bounds_max = glm::max(stats.bounds_max, p);
   }
 
   // Undirected edges as sorted 64-bit keys; runs of equal keys give each edge's face count.
@@ -63,8 +65,10 @@ MeshStats compute_mesh_stats(const Mesh& mesh) {
     i = j;
   }
   for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v) {
-    if (!referenced[v]) ++stats.unreferenced_vertices;
-    else if (find(v) == v) ++stats.connected_components;
+    if (!referenced[v])
+      ++stats.unreferenced_vertices;
+    else if (find(v) == v)
+      ++stats.connected_components;
   }
   return stats;
 }

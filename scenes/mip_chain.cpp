@@ -54,7 +54,8 @@ Image downsample(const Image& source) {
       for (int j = 0; j < row.count; ++j)
         for (int i = 0; i < column.count; ++i) {
           const std::uint64_t w = row.weight[static_cast<std::size_t>(j)] * column.weight[static_cast<std::size_t>(i)];
-          const std::uint8_t* texel = source.texel(column.index[static_cast<std::size_t>(i)], row.index[static_cast<std::size_t>(j)]);
+          const std::uint8_t* texel =
+              source.texel(column.index[static_cast<std::size_t>(i)], row.index[static_cast<std::size_t>(j)]);
           for (int c = 0; c < 4; ++c) sum[c] += w * texel[c];
         }
       for (int c = 0; c < 4; ++c) *out++ = static_cast<std::uint8_t>((sum[c] + total / 2) / total);
@@ -68,8 +69,9 @@ Image downsample(const Image& source) {
 std::vector<Image> build_mip_chain(Image base) {
   if (base.width < 1 || base.height < 1 ||
       base.rgba.size() != static_cast<std::size_t>(base.width) * static_cast<std::size_t>(base.height) * 4)
-    throw InputError("mip chain: image of " + std::to_string(base.width) + "x" + std::to_string(base.height) + " with " +
-                     std::to_string(base.rgba.size()) + " bytes: expected at least 1x1 and 4 bytes per texel");
+    throw InputError("mip chain: image of " + std::to_string(base.width) + "x" + std::to_string(base.height) +
+                     " with " + std::to_string(base.rgba.size()) +
+                     " bytes: expected at least 1x1 and 4 bytes per texel");
   std::vector<Image> levels;
   levels.push_back(std::move(base));
   while (levels.back().width > 1 || levels.back().height > 1) levels.push_back(downsample(levels.back()));

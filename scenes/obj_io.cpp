@@ -32,8 +32,10 @@ void read_floats(TextLines& lines, std::string_view& rest, float* out, int requi
       continue;
     }
     if (!parse_number(token, out[i]))
-      lines.fail(std::string("expected ") + std::to_string(required) + " numbers after '" + what + "', found " + describe_token(token));
-    if (!std::isfinite(out[i])) lines.fail(std::string("'") + what + "' value " + describe_token(token) + " is not finite");
+      lines.fail(std::string("expected ") + std::to_string(required) + " numbers after '" + what + "', found " +
+                 describe_token(token));
+    if (!std::isfinite(out[i]))
+      lines.fail(std::string("'") + what + "' value " + describe_token(token) + " is not finite");
   }
 }
 
@@ -65,7 +67,8 @@ std::string_view strip_map_options(std::string_view rest) {
   }
 }
 
-void load_mtl(const fs::path& path, std::vector<Material>& materials, std::unordered_map<std::string, std::uint32_t>& by_name) {
+void load_mtl(const fs::path& path, std::vector<Material>& materials,
+              std::unordered_map<std::string, std::uint32_t>& by_name) {
   const std::string text = read_whole_file(path.string());
   TextLines lines(path.string(), text);
   const fs::path folder = path.parent_path();
@@ -117,7 +120,8 @@ struct Corner {
 };
 
 // Resolves one OBJ index (1-based, or negative from the end) against the count defined so far.
-std::int64_t resolve_index(TextLines& lines, std::string_view token, std::size_t defined, const char* kind, const char* kinds) {
+std::int64_t resolve_index(TextLines& lines, std::string_view token, std::size_t defined, const char* kind,
+                           const char* kinds) {
   std::int64_t index = 0;
   if (!parse_number(token, index))
     lines.fail(std::string("expected a ") + kind + " index, found " + describe_token(token));
@@ -138,7 +142,7 @@ Mesh load_obj(const std::string& path) {
 
   std::vector<glm::vec3> positions, normals;
   std::vector<glm::vec2> texcoords;
-  std::vector<Corner> corners;          // three per triangle
+  std::vector<Corner> corners;              // three per triangle
   std::vector<std::int64_t> face_material;  // per triangle; -1: before any usemtl
   std::vector<Material> materials;
   std::unordered_map<std::string, std::uint32_t> by_name;
@@ -173,7 +177,8 @@ Mesh load_obj(const std::string& path) {
           std::string_view tail = token.substr(slash + 1);
           const std::size_t slash2 = tail.find('/');
           const std::string_view vt = tail.substr(0, slash2);
-          if (!vt.empty()) corner.vt = resolve_index(lines, vt, texcoords.size(), "texture coordinate", "texture coordinates");
+          if (!vt.empty())
+            corner.vt = resolve_index(lines, vt, texcoords.size(), "texture coordinate", "texture coordinates");
           if (slash2 != std::string_view::npos) {
             const std::string_view vn = tail.substr(slash2 + 1);
             if (!vn.empty()) corner.vn = resolve_index(lines, vn, normals.size(), "normal", "normals");
@@ -181,7 +186,8 @@ Mesh load_obj(const std::string& path) {
         }
         polygon.push_back(corner);
       }
-      if (polygon.size() < 3) lines.fail("face with " + std::to_string(polygon.size()) + " vertices: expected at least 3");
+      if (polygon.size() < 3)
+        lines.fail("face with " + std::to_string(polygon.size()) + " vertices: expected at least 3");
       for (std::size_t i = 2; i < polygon.size(); ++i) {
         corners.insert(corners.end(), {polygon[0], polygon[i - 1], polygon[i]});
         face_material.push_back(current_material);
@@ -216,7 +222,8 @@ Mesh load_obj(const std::string& path) {
     any_vt |= c.vt >= 0, all_vt &= c.vt >= 0, any_vn |= c.vn >= 0, all_vn &= c.vn >= 0;
     lockstep &= (c.vt < 0 || c.vt == c.v) && (c.vn < 0 || c.vn == c.v);
   }
-  lockstep &= (!any_vt || (all_vt && texcoords.size() == positions.size())) && (!any_vn || (all_vn && normals.size() == positions.size()));
+  lockstep &= (!any_vt || (all_vt && texcoords.size() == positions.size())) &&
+              (!any_vn || (all_vn && normals.size() == positions.size()));
   if (lockstep) {
     mesh.positions = std::move(positions);
     if (any_vt) mesh.uvs = std::move(texcoords);
@@ -230,7 +237,8 @@ Mesh load_obj(const std::string& path) {
     mesh.indices.reserve(corners.size());
     for (const Corner& c : corners) {
       std::int64_t found = head[static_cast<std::size_t>(c.v)];
-      while (found >= 0 && (unique[static_cast<std::size_t>(found)].vt != c.vt || unique[static_cast<std::size_t>(found)].vn != c.vn))
+      while (found >= 0 &&
+             (unique[static_cast<std::size_t>(found)].vt != c.vt || unique[static_cast<std::size_t>(found)].vn != c.vn))
         found = next[static_cast<std::size_t>(found)];
       if (found < 0) {
         found = static_cast<std::int64_t>(unique.size());
@@ -258,7 +266,8 @@ Mesh load_obj(const std::string& path) {
       materials.back().name = "default";
     }
     mesh.face_material.reserve(face_material.size());
-    for (const std::int64_t m : face_material) mesh.face_material.push_back(m < 0 ? fallback : static_cast<std::uint32_t>(m));
+    for (const std::int64_t m : face_material)
+      mesh.face_material.push_back(m < 0 ? fallback : static_cast<std::uint32_t>(m));
     mesh.materials = std::move(materials);
   }
   return mesh;
@@ -299,7 +308,8 @@ void save_obj(const Mesh& mesh, const std::string& path) {
         mtl += "# procedural texture: not expressible in MTL\n";
       }
     }
-    write_file_atomically(mtl_path, [&](std::ostream& stream) { stream.write(mtl.data(), static_cast<std::streamsize>(mtl.size())); });
+    write_file_atomically(
+        mtl_path, [&](std::ostream& stream) { stream.write(mtl.data(), static_cast<std::streamsize>(mtl.size())); });
     out += "mtllib " + mtl_path.filename().string() + "\n";
   }
 
@@ -335,8 +345,8 @@ void save_obj(const Mesh& mesh, const std::string& path) {
     if (!names.empty() && static_cast<std::int64_t>(mesh.material_of(f)) != written_material) {
       written_material = mesh.material_of(f);
       if (static_cast<std::size_t>(written_material) >= names.size())
-        throw_in_file(path, "face " + std::to_string(f) + " uses material " + std::to_string(written_material) + " of " +
-                                std::to_string(names.size()));
+        throw_in_file(path, "face " + std::to_string(f) + " uses material " + std::to_string(written_material) +
+                                " of " + std::to_string(names.size()));
       out += "usemtl " + names[static_cast<std::size_t>(written_material)] + "\n";
     }
     out += 'f';
@@ -355,7 +365,8 @@ void save_obj(const Mesh& mesh, const std::string& path) {
     }
     out += '\n';
   }
-  write_file_atomically(path, [&](std::ostream& stream) { stream.write(out.data(), static_cast<std::streamsize>(out.size())); });
+  write_file_atomically(
+      path, [&](std::ostream& stream) { stream.write(out.data(), static_cast<std::streamsize>(out.size())); });
 }
 
 }  // namespace rastrace

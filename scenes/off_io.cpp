@@ -54,7 +54,8 @@ Mesh load_off(const std::string& path) {
   if (k != "OFF")
     lines.fail("expected an OFF header ('OFF', 'NOFF', 'COFF', 'STOFF'...), found " + describe_token(keyword));
   if (trim(rest).empty()) {
-    if (!next_content_line(lines, line)) lines.fail("file ends after the header: expected 'vertices faces edges' counts");
+    if (!next_content_line(lines, line))
+      lines.fail("file ends after the header: expected 'vertices faces edges' counts");
     rest = line;
   }
   const std::int64_t vertex_count = read_count(lines, rest, "vertex");
@@ -79,7 +80,8 @@ Mesh load_off(const std::string& path) {
       const std::string_view token = next_token(rest);
       if (!parse_number(token, c))
         lines.fail("vertex " + std::to_string(v) + ": expected a coordinate, found " + describe_token(token));
-      if (!std::isfinite(c)) lines.fail("vertex " + std::to_string(v) + ": coordinate " + describe_token(token) + " is not finite");
+      if (!std::isfinite(c))
+        lines.fail("vertex " + std::to_string(v) + ": coordinate " + describe_token(token) + " is not finite");
     }
     mesh.positions.emplace_back(x[0], x[1], x[2]);
     if (has_normal) {
@@ -87,7 +89,8 @@ Mesh load_off(const std::string& path) {
       for (float& c : n) {
         const std::string_view token = next_token(rest);
         if (!parse_number(token, c) || !std::isfinite(c))
-          lines.fail("vertex " + std::to_string(v) + ": expected a finite normal component (NOFF), found " + describe_token(token));
+          lines.fail("vertex " + std::to_string(v) + ": expected a finite normal component (NOFF), found " +
+                     describe_token(token));
       }
       mesh.normals.emplace_back(n[0], n[1], n[2]);
     }
@@ -102,7 +105,8 @@ Mesh load_off(const std::string& path) {
       float st[2];
       if (count < 2 || !parse_number(tokens[(count - 2) % 8], st[0]) || !parse_number(tokens[(count - 1) % 8], st[1]) ||
           !std::isfinite(st[0]) || !std::isfinite(st[1]))
-        lines.fail("vertex " + std::to_string(v) + ": expected texture coordinates 's t' at the end of the line (STOFF)");
+        lines.fail("vertex " + std::to_string(v) +
+                   ": expected texture coordinates 's t' at the end of the line (STOFF)");
       mesh.uvs.emplace_back(st[0], st[1]);
     }
   }
@@ -116,19 +120,23 @@ Mesh load_off(const std::string& path) {
     std::string_view token = next_token(rest);
     std::int64_t n = 0;
     if (!parse_number(token, n) || n < 3)
-      lines.fail("face " + std::to_string(f) + ": expected the number of its vertices (at least 3), found " + describe_token(token));
+      lines.fail("face " + std::to_string(f) + ": expected the number of its vertices (at least 3), found " +
+                 describe_token(token));
     std::uint32_t first = 0, previous = 0;
     for (std::int64_t i = 0; i < n; ++i) {
       token = next_token(rest);
       std::int64_t index = 0;
       if (!parse_number(token, index))
-        lines.fail("face " + std::to_string(f) + ": expected " + std::to_string(n) + " vertex indices, found " + describe_token(token) +
-                   " at position " + std::to_string(i));
+        lines.fail("face " + std::to_string(f) + ": expected " + std::to_string(n) + " vertex indices, found " +
+                   describe_token(token) + " at position " + std::to_string(i));
       if (index < 0 || index >= vertex_count)
-        lines.fail("face index " + std::to_string(index) + (index < 0 ? " < 0" : " >= vertex count " + std::to_string(vertex_count)));
+        lines.fail("face index " + std::to_string(index) +
+                   (index < 0 ? " < 0" : " >= vertex count " + std::to_string(vertex_count)));
       const auto current = static_cast<std::uint32_t>(index);
-      if (i == 0) first = current;
-      else if (i >= 2) mesh.indices.insert(mesh.indices.end(), {first, previous, current});
+      if (i == 0)
+        first = current;
+      else if (i >= 2)
+        mesh.indices.insert(mesh.indices.end(), {first, previous, current});
       previous = current;
     }
   }
@@ -163,7 +171,8 @@ void save_off(const Mesh& mesh, const std::string& path) {
     append_number(out, mesh.indices[i + 2]);
     out += '\n';
   }
-  write_file_atomically(path, [&](std::ostream& stream) { stream.write(out.data(), static_cast<std::streamsize>(out.size())); });
+  write_file_atomically(
+      path, [&](std::ostream& stream) { stream.write(out.data(), static_cast<std::streamsize>(out.size())); });
 }
 
 }  // namespace rastrace

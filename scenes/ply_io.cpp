@@ -24,13 +24,15 @@ namespace {
 enum class PlyType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
 
 bool parse_type(std::string_view name, PlyType& type) {
-  static constexpr struct { std::string_view name; PlyType type; } kTypes[] = {
-      {"char", PlyType::Int8},     {"int8", PlyType::Int8},       {"uchar", PlyType::UInt8},
-      {"uint8", PlyType::UInt8},   {"short", PlyType::Int16},     {"int16", PlyType::Int16},
-      {"ushort", PlyType::UInt16}, {"uint16", PlyType::UInt16},   {"int", PlyType::Int32},
-      {"int32", PlyType::Int32},   {"uint", PlyType::UInt32},     {"uint32", PlyType::UInt32},
-      {"float", PlyType::Float32}, {"float32", PlyType::Float32}, {"double", PlyType::Float64},
-      {"float64", PlyType::Float64}};
+  static constexpr struct {
+    std::string_view name;
+    PlyType type;
+  } kTypes[] = {{"char", PlyType::Int8},      {"int8", PlyType::Int8},       {"uchar", PlyType::UInt8},
+                {"uint8", PlyType::UInt8},    {"short", PlyType::Int16},     {"int16", PlyType::Int16},
+                {"ushort", PlyType::UInt16},  {"uint16", PlyType::UInt16},   {"int", PlyType::Int32},
+                {"int32", PlyType::Int32},    {"uint", PlyType::UInt32},     {"uint32", PlyType::UInt32},
+                {"float", PlyType::Float32},  {"float32", PlyType::Float32}, {"double", PlyType::Float64},
+                {"float64", PlyType::Float64}};
   for (const auto& t : kTypes)
     if (t.name == name) {
       type = t.type;
@@ -83,10 +85,14 @@ Header parse_header(const std::string& path, std::string_view text) {
     if (keyword == "format") {
       const std::string_view format = next_token(rest);
       const std::string_view version = next_token(rest);
-      if (format == "ascii") header.format = Format::Ascii;
-      else if (format == "binary_little_endian") header.format = Format::BinaryLittle;
-      else if (format == "binary_big_endian") header.format = Format::BinaryBig;
-      else lines.fail("expected format ascii, binary_little_endian or binary_big_endian, found " + describe_token(format));
+      if (format == "ascii")
+        header.format = Format::Ascii;
+      else if (format == "binary_little_endian")
+        header.format = Format::BinaryLittle;
+      else if (format == "binary_big_endian")
+        header.format = Format::BinaryBig;
+      else
+        lines.fail("expected format ascii, binary_little_endian or binary_big_endian, found " + describe_token(format));
       if (version != "1.0") lines.fail("expected PLY version 1.0, found " + describe_token(version));
       have_format = true;
     } else if (keyword == "element") {
@@ -107,16 +113,19 @@ Header parse_header(const std::string& path, std::string_view text) {
         property.is_list = true;
         const std::string_view count_type = next_token(rest);
         if (!parse_type(count_type, property.count_type) || !is_integer(property.count_type))
-          lines.fail("bad PLY property: list count type must be an integer type (uchar, int...), found " + describe_token(count_type));
+          lines.fail("bad PLY property: list count type must be an integer type (uchar, int...), found " +
+                     describe_token(count_type));
         type = next_token(rest);
       }
       if (!parse_type(type, property.type))
-        lines.fail("bad PLY property: expected a type (char uchar short ushort int uint float double), found " + describe_token(type));
+        lines.fail("bad PLY property: expected a type (char uchar short ushort int uint float double), found " +
+                   describe_token(type));
       property.name = std::string(next_token(rest));
       if (property.name.empty()) lines.fail("bad PLY property: expected a property name after the type");
       header.elements.back().properties.push_back(std::move(property));
     } else {
-      lines.fail("unexpected header line " + describe_token(keyword) + ": expected format, element, property, comment or end_header");
+      lines.fail("unexpected header line " + describe_token(keyword) +
+                 ": expected format, element, property, comment or end_header");
     }
   }
   if (!have_format) lines.fail("header has no 'format' line");
@@ -141,8 +150,11 @@ void assign_roles(const std::string& path, Header& header, Element*& vertex, Ele
   const char* const position_names[3] = {"x", "y", "z"};
   for (int axis = 0; axis < 3; ++axis) {
     Property* p = find(*vertex, position_names[axis]);
-    if (!p) throw_at_line(path, vertex->header_line, std::string("vertex element has no property ") + position_names[axis]);
-    if (p->is_list) throw_at_line(path, vertex->header_line, std::string("bad PLY property: vertex ") + position_names[axis] + " is a list, expected a scalar");
+    if (!p)
+      throw_at_line(path, vertex->header_line, std::string("vertex element has no property ") + position_names[axis]);
+    if (p->is_list)
+      throw_at_line(path, vertex->header_line,
+                    std::string("bad PLY property: vertex ") + position_names[axis] + " is a list, expected a scalar");
     p->role = static_cast<Role>(kX + axis);
   }
   Property* nx = find(*vertex, "nx");
@@ -170,7 +182,8 @@ void assign_roles(const std::string& path, Header& header, Element*& vertex, Ele
     if (!indices)
       throw_at_line(path, face->header_line, "face element has no 'vertex_indices' (or 'vertex_index') list property");
     if (!indices->is_list || !is_integer(indices->type))
-      throw_at_line(path, face->header_line, "bad PLY property: " + indices->name + " must be a list of an integer type");
+      throw_at_line(path, face->header_line,
+                    "bad PLY property: " + indices->name + " must be a list of an integer type");
     indices->role = kIndices;
   }
 }
@@ -185,12 +198,14 @@ class AsciiReader {
     const std::string_view token = next(what);
     if (type == PlyType::Float32) {
       float value = 0.0f;  // parsed as float: the decimal rounds once, to the nearest float
-      if (!parse_number(token, value)) fail(std::string("expected a number for ") + what + ", found " + describe_token(token));
+      if (!parse_number(token, value))
+        fail(std::string("expected a number for ") + what + ", found " + describe_token(token));
       return value;
     }
     if (type == PlyType::Float64) {
       double value = 0.0;
-      if (!parse_number(token, value)) fail(std::string("expected a number for ") + what + ", found " + describe_token(token));
+      if (!parse_number(token, value))
+        fail(std::string("expected a number for ") + what + ", found " + describe_token(token));
       return value;
     }
     return static_cast<double>(integer(type, what, token));
@@ -211,14 +226,17 @@ class AsciiReader {
         fail(std::string("expected an integer for ") + what + ", found " + describe_token(token));
       return static_cast<std::int64_t>(d);
     }
-    if (!parse_number(token, value)) fail(std::string("expected an integer for ") + what + ", found " + describe_token(token));
+    if (!parse_number(token, value))
+      fail(std::string("expected an integer for ") + what + ", found " + describe_token(token));
     return value;
   }
   void skip_space() {
     while (position_ < text_.size()) {
       const char c = text_[position_];
-      if (c == '\n') ++line_;
-      else if (c != ' ' && c != '\t' && c != '\r') break;
+      if (c == '\n')
+        ++line_;
+      else if (c != ' ' && c != '\t' && c != '\r')
+        break;
       ++position_;
     }
   }
@@ -226,8 +244,8 @@ class AsciiReader {
     skip_space();
     if (position_ >= text_.size()) fail(std::string("file ends early: expected a value for ") + what);
     const std::size_t begin = position_;
-    while (position_ < text_.size() && text_[position_] != ' ' && text_[position_] != '\t' && text_[position_] != '\n' &&
-           text_[position_] != '\r')
+    while (position_ < text_.size() && text_[position_] != ' ' && text_[position_] != '\t' &&
+           text_[position_] != '\n' && text_[position_] != '\r')
       ++position_;
     return text_.substr(begin, position_ - begin);
   }
@@ -246,25 +264,39 @@ class BinaryReader {
 
   double scalar(PlyType type, const char* what) {
     switch (type) {
-      case PlyType::Int8: return read<std::int8_t>(what);
-      case PlyType::UInt8: return read<std::uint8_t>(what);
-      case PlyType::Int16: return read<std::int16_t>(what);
-      case PlyType::UInt16: return read<std::uint16_t>(what);
-      case PlyType::Int32: return read<std::int32_t>(what);
-      case PlyType::UInt32: return read<std::uint32_t>(what);
-      case PlyType::Float32: return read<float>(what);
-      case PlyType::Float64: return read<double>(what);
+      case PlyType::Int8:
+        return read<std::int8_t>(what);
+      case PlyType::UInt8:
+        return read<std::uint8_t>(what);
+      case PlyType::Int16:
+        return read<std::int16_t>(what);
+      case PlyType::UInt16:
+        return read<std::uint16_t>(what);
+      case PlyType::Int32:
+        return read<std::int32_t>(what);
+      case PlyType::UInt32:
+        return read<std::uint32_t>(what);
+      case PlyType::Float32:
+        return read<float>(what);
+      case PlyType::Float64:
+        return read<double>(what);
     }
     return 0.0;
   }
   std::int64_t integer(PlyType type, const char* what) {
     switch (type) {
-      case PlyType::Int8: return read<std::int8_t>(what);
-      case PlyType::UInt8: return read<std::uint8_t>(what);
-      case PlyType::Int16: return read<std::int16_t>(what);
-      case PlyType::UInt16: return read<std::uint16_t>(what);
-      case PlyType::Int32: return read<std::int32_t>(what);
-      case PlyType::UInt32: return read<std::uint32_t>(what);
+      case PlyType::Int8:
+        return read<std::int8_t>(what);
+      case PlyType::UInt8:
+        return read<std::uint8_t>(what);
+      case PlyType::Int16:
+        return read<std::int16_t>(what);
+      case PlyType::UInt16:
+        return read<std::uint16_t>(what);
+      case PlyType::Int32:
+        return read<std::int32_t>(what);
+      case PlyType::UInt32:
+        return read<std::uint32_t>(what);
       default: {
         const double d = scalar(type, what);
         if (!(d == std::floor(d)) || std::fabs(d) > 9.0e15) fail(std::string("expected an integer value for ") + what);
@@ -297,7 +329,8 @@ class BinaryReader {
 };
 
 template <typename Reader>
-void read_body(Reader& reader, const Header& header, const Element* vertex_element, bool normals, bool uvs, Mesh& mesh) {
+void read_body(Reader& reader, const Header& header, const Element* vertex_element, bool normals, bool uvs,
+               Mesh& mesh) {
   const std::uint64_t vertex_count = vertex_element->count;
   for (const Element& element : header.elements) {
     const bool is_vertex = &element == vertex_element;
@@ -307,10 +340,12 @@ void read_body(Reader& reader, const Header& header, const Element* vertex_eleme
         const char* what = property.name.c_str();
         if (property.is_list) {
           const std::int64_t n = reader.integer(property.count_type, what);
-          if (n < 0) reader.fail(element.name + " " + std::to_string(record) + ": negative list length " + std::to_string(n));
+          if (n < 0)
+            reader.fail(element.name + " " + std::to_string(record) + ": negative list length " + std::to_string(n));
           if (property.role == kIndices) {
             if (n < 3)
-              reader.fail("face " + std::to_string(record) + ": expected at least 3 vertex indices, found " + std::to_string(n));
+              reader.fail("face " + std::to_string(record) + ": expected at least 3 vertex indices, found " +
+                          std::to_string(n));
             std::uint32_t first = 0, previous = 0;
             for (std::int64_t i = 0; i < n; ++i) {
               const std::int64_t index = reader.integer(property.type, what);
@@ -318,8 +353,10 @@ void read_body(Reader& reader, const Header& header, const Element* vertex_eleme
                 reader.fail("face index " + std::to_string(index) +
                             (index < 0 ? " < 0" : " >= vertex count " + std::to_string(vertex_count)));
               const auto current = static_cast<std::uint32_t>(index);
-              if (i == 0) first = current;
-              else if (i >= 2) mesh.indices.insert(mesh.indices.end(), {first, previous, current});
+              if (i == 0)
+                first = current;
+              else if (i >= 2)
+                mesh.indices.insert(mesh.indices.end(), {first, previous, current});
               previous = current;
             }
           } else {
@@ -329,7 +366,8 @@ void read_body(Reader& reader, const Header& header, const Element* vertex_eleme
           const double value = reader.scalar(property.type, what);
           if (property.role != kSkip) {
             if (!std::isfinite(value) || std::fabs(value) > std::numeric_limits<float>::max())
-              reader.fail(element.name + " " + std::to_string(record) + ": " + property.name + " is not finite (or beyond float range)");
+              reader.fail(element.name + " " + std::to_string(record) + ": " + property.name +
+                          " is not finite (or beyond float range)");
             values[property.role] = static_cast<float>(value);
           }
         }
@@ -351,7 +389,8 @@ Mesh load_ply(const std::string& path) {
   Element* vertex = nullptr;
   Element* face = nullptr;
   assign_roles(path, header, vertex, face);
-  if (vertex->count > 0xffffffffull) throw_at_line(path, vertex->header_line, "vertex count too large (at most 4294967295)");
+  if (vertex->count > 0xffffffffull)
+    throw_at_line(path, vertex->header_line, "vertex count too large (at most 4294967295)");
 
   Mesh mesh;
   mesh.name = path;
@@ -371,7 +410,8 @@ Mesh load_ply(const std::string& path) {
   if (header.format == Format::Ascii) {
     AsciiReader reader(path, data, header.data_offset, header.data_line);
     read_body(reader, header, vertex, has_normals, has_uvs, mesh);
-    if (!reader.at_end()) reader.fail("unexpected data after the last element (does the header give the wrong counts?)");
+    if (!reader.at_end())
+      reader.fail("unexpected data after the last element (does the header give the wrong counts?)");
   } else {
     BinaryReader reader(path, data, header.data_offset, header.format == Format::BinaryBig);
     read_body(reader, header, vertex, has_normals, has_uvs, mesh);
@@ -446,7 +486,8 @@ void save_ply(const Mesh& mesh, const std::string& path, bool ascii) {
       }
     }
   }
-  write_file_atomically(path, [&](std::ostream& stream) { stream.write(out.data(), static_cast<std::streamsize>(out.size())); });
+  write_file_atomically(
+      path, [&](std::ostream& stream) { stream.write(out.data(), static_cast<std::streamsize>(out.size())); });
 }
 
 }  // namespace rastrace

@@ -7,8 +7,7 @@ namespace rastrace {
 
 Mesh make_grid(int width, int height) {
   if (width < 1 || height < 1)
-    throw InputError("grid " + std::to_string(width) + "x" + std::to_string(height) +
-                     ": expected at least 1x1 quads");
+    throw InputError("grid " + std::to_string(width) + "x" + std::to_string(height) + ": expected at least 1x1 quads");
   Mesh mesh;
   mesh.name = "grid" + std::to_string(width) + "x" + std::to_string(height);
   mesh.grid = GridShape{width, height};

@@ -8,7 +8,8 @@
 namespace rastrace {
 
 Mesh make_plane(int segments, float repeat) {
-  if (segments < 1 || segments > 4096) throw InputError("plane: " + std::to_string(segments) + " segments: expected 1 to 4096");
+  if (segments < 1 || segments > 4096)
+    throw InputError("plane: " + std::to_string(segments) + " segments: expected 1 to 4096");
   if (!(repeat > 0.0f) || !std::isfinite(repeat)) throw InputError("plane: texture repeat must be a positive number");
   Mesh mesh;
   mesh.name = "plane" + std::to_string(segments);

@@ -18,8 +18,9 @@ Image blank(int size, const char* what) {
 }
 
 void put(Image& image, int x, int y, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
-  std::uint8_t* texel = image.rgba.data() + (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
-                                             static_cast<std::size_t>(x)) * 4;
+  std::uint8_t* texel =
+      image.rgba.data() +
+      (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x)) * 4;
   texel[0] = r, texel[1] = g, texel[2] = b, texel[3] = 255;
 }
 
@@ -46,10 +47,14 @@ Image make_four_colour(int size) {
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) {
       const bool right = x >= half && size > 1, bottom = y >= half && size > 1;
-      if (!right && !bottom) put(image, x, y, 230, 40, 40);        // red
-      else if (right && !bottom) put(image, x, y, 40, 200, 60);    // green
-      else if (!right) put(image, x, y, 40, 80, 230);              // blue
-      else put(image, x, y, 240, 220, 40);                         // yellow
+      if (!right && !bottom)
+        put(image, x, y, 230, 40, 40);  // red
+      else if (right && !bottom)
+        put(image, x, y, 40, 200, 60);  // green
+      else if (!right)
+        put(image, x, y, 40, 80, 230);  // blue
+      else
+        put(image, x, y, 240, 220, 40);  // yellow
     }
   return image;
 }
@@ -59,7 +64,8 @@ Image make_uv_gradient(int size) {
   const int span = size > 1 ? size - 1 : 1;
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x)
-      put(image, x, y, static_cast<std::uint8_t>((x * 255 + span / 2) / span), static_cast<std::uint8_t>((y * 255 + span / 2) / span), 0);
+      put(image, x, y, static_cast<std::uint8_t>((x * 255 + span / 2) / span),
+          static_cast<std::uint8_t>((y * 255 + span / 2) / span), 0);
   return image;
 }
 

@@ -50,7 +50,8 @@ class SceneReader {
     if (root.contains("background")) scene.background = colour(root["background"], "background");
     const json& objects = required(root, "scene", "objects");
     if (!objects.is_array() || objects.empty()) fail("objects", "a non-empty array of objects");
-    for (std::size_t i = 0; i < objects.size(); ++i) scene.objects.push_back(object(objects[i], "objects[" + std::to_string(i) + "]"));
+    for (std::size_t i = 0; i < objects.size(); ++i)
+      scene.objects.push_back(object(objects[i], "objects[" + std::to_string(i) + "]"));
     if (root.contains("camera")) {
       scene.camera = camera(root["camera"]);
     } else {
@@ -120,7 +121,8 @@ class SceneReader {
     glm::vec4 c(1.0f);
     for (std::size_t i = 0; i < value.size(); ++i) {
       const double x = number(value[i], where + "[" + std::to_string(i) + "]");
-      if (x < 0.0 || x > 1.0) fail(where + "[" + std::to_string(i) + "]", "a colour component in 0..1, found " + value[i].dump());
+      if (x < 0.0 || x > 1.0)
+        fail(where + "[" + std::to_string(i) + "]", "a colour component in 0..1, found " + value[i].dump());
       c[static_cast<int>(i)] = static_cast<float>(x);
     }
     return c;
@@ -138,8 +140,9 @@ class SceneReader {
     if (fs::exists(beside)) return beside.string();
     const fs::path in_data = fs::path(data_directory()) / path;
     if (fs::exists(in_data)) return in_data.string();
-    fail(where, "an existing file; \"" + name + "\" found neither in " + (folder_.empty() ? std::string(".") : folder_.string()) +
-                    " nor in the data folder " + data_directory());
+    fail(where, "an existing file; \"" + name + "\" found neither in " +
+                    (folder_.empty() ? std::string(".") : folder_.string()) + " nor in the data folder " +
+                    data_directory());
   }
 
   Camera camera(const json& value) const {
@@ -152,11 +155,13 @@ class SceneReader {
     if (value.contains("fov_y")) c.fov_y_degrees = static_cast<float>(number(value["fov_y"], "camera.fov_y"));
     if (value.contains("near")) c.near_plane = static_cast<float>(number(value["near"], "camera.near"));
     if (value.contains("far")) c.far_plane = static_cast<float>(number(value["far"], "camera.far"));
-    if (!(c.fov_y_degrees > 0.0f && c.fov_y_degrees < 180.0f)) fail("camera.fov_y", "degrees between 0 and 180 (exclusive)");
+    if (!(c.fov_y_degrees > 0.0f && c.fov_y_degrees < 180.0f))
+      fail("camera.fov_y", "degrees between 0 and 180 (exclusive)");
     if (!(c.near_plane > 0.0f)) fail("camera.near", "a positive distance");
     if (!(c.far_plane > c.near_plane)) fail("camera.far", "a distance greater than camera.near");
     if (glm::length(c.target - c.eye) == 0.0f) fail("camera.target", "a point different from camera.eye");
-    if (glm::length(glm::cross(c.target - c.eye, c.up)) == 0.0f) fail("camera.up", "a direction not parallel to the view direction");
+    if (glm::length(glm::cross(c.target - c.eye, c.up)) == 0.0f)
+      fail("camera.up", "a direction not parallel to the view direction");
     return c;
   }
 
@@ -169,7 +174,8 @@ class SceneReader {
     if (name == "grid") return make_grid(get("width", 16, 1, 4096), get("height", 16, 1, 4096));
     if (name == "icosphere") return make_icosphere(get("subdivisions", 3, 0, 8));
     if (name == "plane") {
-      const float repeat = value.contains("repeat") ? static_cast<float>(number(value["repeat"], where + ".repeat")) : 1.0f;
+      const float repeat =
+          value.contains("repeat") ? static_cast<float>(number(value["repeat"], where + ".repeat")) : 1.0f;
       if (!(repeat > 0.0f)) fail(where + ".repeat", "a positive number");
       return make_plane(get("segments", 1, 1, 4096), repeat);
     }
@@ -185,7 +191,8 @@ class SceneReader {
       glm::mat4 result(1.0f);
       for (int row = 0; row < 4; ++row)
         for (int column = 0; column < 4; ++column)
-          result[column][row] = static_cast<float>(number(m[static_cast<std::size_t>(row * 4 + column)], where + ".matrix[" + std::to_string(row * 4 + column) + "]"));
+          result[column][row] = static_cast<float>(number(m[static_cast<std::size_t>(row * 4 + column)],
+                                                          where + ".matrix[" + std::to_string(row * 4 + column) + "]"));
       return result;
     }
     allow_keys(value, where, {"translate", "rotate", "scale"});
@@ -199,7 +206,8 @@ class SceneReader {
     }
     if (value.contains("scale")) {
       const json& s = value["scale"];
-      const glm::vec3 factors = s.is_number() ? glm::vec3(static_cast<float>(number(s, where + ".scale"))) : vec3(s, where + ".scale");
+      const glm::vec3 factors =
+          s.is_number() ? glm::vec3(static_cast<float>(number(s, where + ".scale"))) : vec3(s, where + ".scale");
       if (factors.x == 0.0f || factors.y == 0.0f || factors.z == 0.0f) fail(where + ".scale", "non-zero factors");
       result = glm::scale(result, factors);
     }
@@ -214,13 +222,18 @@ class SceneReader {
       source.path = file_path(value, where);
       return source;
     }
-    if (!value.is_object()) fail(where, "a texture file name, a procedural texture object or null, found " + kind(value));
+    if (!value.is_object())
+      fail(where, "a texture file name, a procedural texture object or null, found " + kind(value));
     allow_keys(value, where, {"procedural", "size", "checks"});
     const std::string name = string(required(value, where, "procedural"), where + ".procedural");
-    if (name == "checker") source.kind = TextureSource::Kind::Checker;
-    else if (name == "four_colour" || name == "four_color") source.kind = TextureSource::Kind::FourColour;
-    else if (name == "gradient") source.kind = TextureSource::Kind::Gradient;
-    else fail(where + ".procedural", "\"checker\", \"four_colour\" or \"gradient\", found \"" + name + "\"");
+    if (name == "checker")
+      source.kind = TextureSource::Kind::Checker;
+    else if (name == "four_colour" || name == "four_color")
+      source.kind = TextureSource::Kind::FourColour;
+    else if (name == "gradient")
+      source.kind = TextureSource::Kind::Gradient;
+    else
+      fail(where + ".procedural", "\"checker\", \"four_colour\" or \"gradient\", found \"" + name + "\"");
     if (value.contains("size")) source.size = integer(value["size"], where + ".size", 1, 16384);
     if (value.contains("checks")) source.checks = integer(value["checks"], where + ".checks", 1, source.size);
     return source;
@@ -231,17 +244,26 @@ class SceneReader {
     allow_keys(value, where, {"name", "mesh", "uv_projection", "transform", "material"});
     SceneObject result;
     const json& mesh = required(value, where, "mesh");
-    if (mesh.is_string()) result.mesh = load_mesh(file_path(mesh, where + ".mesh"));
-    else if (mesh.is_object()) result.mesh = procedural_mesh(mesh, where + ".mesh");
-    else fail(where + ".mesh", "a mesh file name or a procedural mesh object, found " + kind(mesh));
+    if (mesh.is_string())
+      result.mesh = load_mesh(file_path(mesh, where + ".mesh"));
+    else if (mesh.is_object())
+      result.mesh = procedural_mesh(mesh, where + ".mesh");
+    else
+      fail(where + ".mesh", "a mesh file name or a procedural mesh object, found " + kind(mesh));
     if (value.contains("name")) result.mesh.name = string(value["name"], where + ".name");
     if (value.contains("uv_projection")) {
       const std::string projection = string(value["uv_projection"], where + ".uv_projection");
-      if (projection == "spherical") project_uvs_spherical(result.mesh);
-      else if (projection == "planar_x") project_uvs_planar(result.mesh, 0);
-      else if (projection == "planar_y") project_uvs_planar(result.mesh, 1);
-      else if (projection == "planar_z") project_uvs_planar(result.mesh, 2);
-      else fail(where + ".uv_projection", "\"spherical\", \"planar_x\", \"planar_y\" or \"planar_z\", found \"" + projection + "\"");
+      if (projection == "spherical")
+        project_uvs_spherical(result.mesh);
+      else if (projection == "planar_x")
+        project_uvs_planar(result.mesh, 0);
+      else if (projection == "planar_y")
+        project_uvs_planar(result.mesh, 1);
+      else if (projection == "planar_z")
+        project_uvs_planar(result.mesh, 2);
+      else
+        fail(where + ".uv_projection",
+             "\"spherical\", \"planar_x\", \"planar_y\" or \"planar_z\", found \"" + projection + "\"");
     }
     if (value.contains("transform")) result.transform = transform(value["transform"], where + ".transform");
     if (value.contains("material")) {
@@ -276,8 +298,10 @@ Scene load_json_scene(const std::string& path) {
     const std::size_t byte = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
     std::uint64_t line = 1, column = 1;
     for (std::size_t i = 0; i < byte; ++i) {
-      if (text[i] == '\n') ++line, column = 1;
-      else ++column;
+      if (text[i] == '\n')
+        ++line, column = 1;
+      else
+        ++column;
     }
     std::string message = e.what();
     const std::size_t colon = message.find(": ", message.find("parse error"));

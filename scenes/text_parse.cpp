@@ -2,9 +2,9 @@
 
 #include <charconv>
 #include <cmath>
-#include <limits>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <system_error>
 #include <type_traits>
 
@@ -83,13 +83,15 @@ bool parse_whole(std::string_view token, T& value) {
       if (!parse_whole(token, wide)) return false;
       // Beyond float range the conversion is undefined: give the infinity it rounds to.
       constexpr float kInfinity = std::numeric_limits<float>::infinity();
-      value = std::fabs(wide) > std::numeric_limits<float>::max() ? (wide > 0 ? kInfinity : -kInfinity) : static_cast<float>(wide);
+      value = std::fabs(wide) > std::numeric_limits<float>::max() ? (wide > 0 ? kInfinity : -kInfinity)
+                                                                  : static_cast<float>(wide);
       return true;
     } else if constexpr (std::is_same_v<T, double>) {
       long double wide = 0.0L;
       if (!parse_whole(token, wide)) return false;
       constexpr double kInfinity = std::numeric_limits<double>::infinity();
-      value = std::fabs(wide) > std::numeric_limits<double>::max() ? (wide > 0 ? kInfinity : -kInfinity) : static_cast<double>(wide);
+      value = std::fabs(wide) > std::numeric_limits<double>::max() ? (wide > 0 ? kInfinity : -kInfinity)
+                                                                   : static_cast<double>(wide);
       return true;
     }
   }
@@ -105,7 +107,8 @@ std::string describe_token(std::string_view token) {
   if (token.empty()) return "end of line";
   if (token.size() > 40) return "'" + std::string(token.substr(0, 40)) + "...'";
   std::string out = "'";
-  for (const char c : token) out += (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) ? '?' : c;
+  for (const char c : token)
+    out += (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) ? '?' : c;
   return out + "'";
 }
 

@@ -13,8 +13,8 @@ struct Image {
   std::vector<std::uint8_t> rgba;  // 4 bytes per texel, row 0 is the top row (t = 0 in GL terms)
 
   const std::uint8_t* texel(int x, int y) const {
-    return rgba.data() + (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
-                          static_cast<std::size_t>(x)) * 4;
+    return rgba.data() +
+           (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 4;
   }
 };
 

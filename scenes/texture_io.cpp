@@ -78,12 +78,15 @@ void check_png_chunks(const std::string& name, const std::uint8_t* data, std::si
   std::size_t position = 8;
   while (true) {
     if (size - position < 12)
-      throw_at_byte(name, position, "truncated PNG: expected a chunk header (length, type) and CRC, found " +
-                                        std::to_string(size - position) + " bytes");
+      throw_at_byte(name, position,
+                    "truncated PNG: expected a chunk header (length, type) and CRC, found " +
+                        std::to_string(size - position) + " bytes");
     const std::uint32_t length = big_endian32(data + position);
     const std::string type(reinterpret_cast<const char*>(data + position + 4), 4);
     if (length > 0x7fffffffu || size - position - 12 < length)
-      throw_at_byte(name, position, "truncated PNG: chunk '" + type + "' of " + std::to_string(length) + " bytes runs past the end of the file");
+      throw_at_byte(
+          name, position,
+          "truncated PNG: chunk '" + type + "' of " + std::to_string(length) + " bytes runs past the end of the file");
     if (crc32(data + position + 4, length + 4) != big_endian32(data + position + 8 + length))
       throw_at_byte(name, position, "corrupt PNG: chunk '" + type + "' fails its CRC check");
     if (type == "IEND") return;
@@ -118,7 +121,8 @@ Texture load_texture(const TextureSource& source) {
   Texture texture;
   Image base;
   switch (source.kind) {
-    case TextureSource::Kind::None: throw InputError("load_texture: the material has no texture");
+    case TextureSource::Kind::None:
+      throw InputError("load_texture: the material has no texture");
     case TextureSource::Kind::File:
       base = source.embedded ? load_image_from_memory(*source.embedded, source.path) : load_image(source.path);
       texture.name = source.path;

@@ -33,14 +33,15 @@ void project_uvs_spherical(Mesh& mesh) {
       mesh.uvs[v] = glm::vec2(0.5f);
       continue;
     }
-    const float u = std::atan2(d.x, d.z) / (2.0f * std::numbers::pi_v<float>) + 0.5f;
+    const float u = std::atan2(d.x, d.z) / (2.0f * std::numbers::pi_v<float>)+0.5f;
     const float t = std::acos(std::clamp(d.y / length, -1.0f, 1.0f)) / std::numbers::pi_v<float>;
     mesh.uvs[v] = glm::vec2(u, t);
   }
 }
 
 void project_uvs_planar(Mesh& mesh, int axis) {
-  if (axis < 0 || axis > 2) throw InputError("planar UV projection: axis " + std::to_string(axis) + ": expected 0 (x), 1 (y) or 2 (z)");
+  if (axis < 0 || axis > 2)
+    throw InputError("planar UV projection: axis " + std::to_string(axis) + ": expected 0 (x), 1 (y) or 2 (z)");
   static constexpr int kU[3] = {2, 0, 0};
   static constexpr int kV[3] = {1, 2, 1};
   const int ua = kU[axis], va = kV[axis];

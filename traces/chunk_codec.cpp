@@ -7,9 +7,12 @@ namespace rastrace {
 
 const char* to_string(RecordKind kind) {
   switch (kind) {
-    case RecordKind::Vertex: return "vertex";
-    case RecordKind::Texel: return "texel";
-    default: return "address";
+    case RecordKind::Vertex:
+      return "vertex";
+    case RecordKind::Texel:
+      return "texel";
+    default:
+      return "address";
   }
 }
 
@@ -40,7 +43,11 @@ void put_column(std::string& out, std::size_t n, Get get) {
     widest |= z;
     large += z >= 0xFF;
   }
-  const std::uint8_t width = widest == 0 ? 0 : widest < 0x100 ? 1 : widest < 0x10000 ? 2 : widest < 0x100000000ull ? 4 : 8;
+  const std::uint8_t width = widest == 0               ? 0
+                             : widest < 0x100          ? 1
+                             : widest < 0x10000        ? 2
+                             : widest < 0x100000000ull ? 4
+                                                       : 8;
   const std::uint64_t deltas = n ? n - 1 : 0;
   const bool escaped = width > 1 && deltas + 4 + 8 * large < deltas * width;
   out.push_back(static_cast<char>(escaped ? kEscapedBytes : width));
@@ -229,11 +236,21 @@ void decode_range(Column& col, Record* out, std::size_t begin, std::size_t end) 
     case 0:
       for (std::size_t i = begin; i < end; ++i) out[i].*member = static_cast<Field>(col.value);
       break;
-    case 1: decode_fixed<1, Record, Field, member>(col, out, begin, end); break;
-    case 2: decode_fixed<2, Record, Field, member>(col, out, begin, end); break;
-    case 4: decode_fixed<4, Record, Field, member>(col, out, begin, end); break;
-    case 8: decode_fixed<8, Record, Field, member>(col, out, begin, end); break;
-    default: decode_escaped<Record, Field, member>(col, out, begin, end); break;
+    case 1:
+      decode_fixed<1, Record, Field, member>(col, out, begin, end);
+      break;
+    case 2:
+      decode_fixed<2, Record, Field, member>(col, out, begin, end);
+      break;
+    case 4:
+      decode_fixed<4, Record, Field, member>(col, out, begin, end);
+      break;
+    case 8:
+      decode_fixed<8, Record, Field, member>(col, out, begin, end);
+      break;
+    default:
+      decode_escaped<Record, Field, member>(col, out, begin, end);
+      break;
   }
 }
 

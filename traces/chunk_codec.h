@@ -1,10 +1,10 @@
 // The record encoding inside a trace chunk (before zstd): struct of arrays, one column per field.
 // A column is: its mode (1 byte), the first value (8 bytes), then the zig-zag deltas of the
 // following records: mode 0, 1, 2, 4, 8 = fixed width w bytes each, little endian; mode 0x81 = a
-// u32 count of escapes, one byte per delta (0xFF = escaped), then the escaped deltas, 8 bytes each. Rendered traces move in small
-// steps (neighbouring texels, consecutive vertex ids), so most deltas fit one byte or none, and
-// decoding is a flat prefix sum per column. Vertex chunks start with their draw (draw number,
-// primitive type, restart index) and keep primitive starts as a bitmap.
+// u32 count of escapes, one byte per delta (0xFF = escaped), then the escaped deltas, 8 bytes each. Rendered traces
+// move in small steps (neighbouring texels, consecutive vertex ids), so most deltas fit one byte or none, and decoding
+// is a flat prefix sum per column. Vertex chunks start with their draw (draw number, primitive type, restart index) and
+// keep primitive starts as a bitmap.
 #pragma once
 
 #include <cstdint>

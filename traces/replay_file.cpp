@@ -42,7 +42,8 @@ namespace {
 // Drops the kinds the caller did not ask for (text formats carry every kind).
 class FilterSink final : public EventSink {
  public:
-  FilterSink(EventSink& inner, ReplayKinds kinds, Progress* progress) : inner_(inner), kinds_(kinds), progress_(progress) {}
+  FilterSink(EventSink& inner, ReplayKinds kinds, Progress* progress)
+      : inner_(inner), kinds_(kinds), progress_(progress) {}
   void begin_draw(const DrawInfo& d) override {
     if (kinds_.vertices) inner_.begin_draw(d);
   }

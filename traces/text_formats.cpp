@@ -19,12 +19,12 @@ class CsvExportSink final : public EventSink {
  public:
   explicit CsvExportSink(std::ostream& out) : out_(out) {}
   void begin_draw(const DrawInfo& d) override {
-    out_ << "begin_draw," << d.draw << ',' << static_cast<int>(d.type) << ',' << d.restart_index
-         << ",,,,,,,,,,,\n";
+    out_ << "begin_draw," << d.draw << ',' << static_cast<int>(d.type) << ',' << d.restart_index << ",,,,,,,,,,,\n";
   }
   void end_draw() override { out_ << "end_draw,,,,,,,,,,,,,,\n"; }
   void vertex_fetches(std::span<const VertexFetch> fetches) override {
-    for (const VertexFetch& f : fetches) out_ << "vertex,,,," << f.vertex << ',' << (f.primitive_start ? 1 : 0) << ",,,,,,,,,\n";
+    for (const VertexFetch& f : fetches)
+      out_ << "vertex,,,," << f.vertex << ',' << (f.primitive_start ? 1 : 0) << ",,,,,,,,,\n";
   }
   void texel_accesses(std::span<const TexelAccess> texels) override {
     for (const TexelAccess& t : texels)
@@ -63,8 +63,9 @@ T number(std::string_view text, const std::string& file, std::uint64_t line, con
   T value{};
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value, base);
   if (text.empty() || ec != std::errc() || end != text.data() + text.size())
-    throw_at_line(file, line, std::string("column ") + column + ": '" + std::string(text) + "' is not " +
-                                  (base == 16 ? "a hexadecimal" : "an unsigned") + " number in range");
+    throw_at_line(file, line,
+                  std::string("column ") + column + ": '" + std::string(text) + "' is not " +
+                      (base == 16 ? "a hexadecimal" : "an unsigned") + " number in range");
   return value;
 }
 
@@ -81,7 +82,8 @@ TraceMetadata read_csv_metadata(const std::string& path) {
   if (!in) throw_in_file(path, "cannot open for reading");
   std::string line;
   std::getline(in, line);
-  if (line.rfind(kMetadataPrefix, 0) == 0) return metadata_from_json(line.substr(std::string(kMetadataPrefix).size()), path);
+  if (line.rfind(kMetadataPrefix, 0) == 0)
+    return metadata_from_json(line.substr(std::string(kMetadataPrefix).size()), path);
   return {};
 }
 
@@ -112,7 +114,8 @@ void import_csv(const std::string& path, EventSink& sink) {
       continue;
     }
     const auto f = fields(text);
-    if (f.size() != 15) throw_at_line(path, line, "expected 15 comma-separated fields, found " + std::to_string(f.size()));
+    if (f.size() != 15)
+      throw_at_line(path, line, "expected 15 comma-separated fields, found " + std::to_string(f.size()));
     if (f[0] == "begin_draw") {
       flush();
       DrawInfo d;
@@ -143,11 +146,12 @@ void import_csv(const std::string& path, EventSink& sink) {
       texels.push_back(t);
     } else if (f[0] == "address") {
       if (!vertices.empty() || !texels.empty()) flush();
-      addresses.push_back({number<std::uint64_t>(f[13], path, line, "address", 16),
-                           number<std::uint8_t>(f[14], path, line, "label")});
+      addresses.push_back(
+          {number<std::uint64_t>(f[13], path, line, "address", 16), number<std::uint8_t>(f[14], path, line, "label")});
     } else {
-      throw_at_line(path, line, "unknown event '" + std::string(f[0]) +
-                                    "': expected begin_draw, end_draw, vertex, texel or address");
+      throw_at_line(
+          path, line,
+          "unknown event '" + std::string(f[0]) + "': expected begin_draw, end_draw, vertex, texel or address");
     }
     if (vertices.size() + texels.size() + addresses.size() >= kBatch) flush();
   }
@@ -168,7 +172,8 @@ std::uint64_t import_din(const std::string& path, EventSink& sink) {
     ++line;
     std::string_view rest(text);
     const auto skip_space = [&] {
-      while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t' || rest.front() == '\r')) rest.remove_prefix(1);
+      while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t' || rest.front() == '\r'))
+        rest.remove_prefix(1);
     };
     const auto word = [&] {
       skip_space();
@@ -185,7 +190,9 @@ std::uint64_t import_din(const std::string& path, EventSink& sink) {
     const unsigned label = number<unsigned>(label_text, path, line, "label");
     if (label == 3) continue;
     if (label == 4) throw_at_line(path, line, "label 4 (cache flush) is not supported: expected labels 0, 1, 2 or 3");
-    if (label > 4) throw_at_line(path, line, "label " + std::to_string(label) + ": expected 0 (read), 1 (write), 2 (fetch) or 3 (escape)");
+    if (label > 4)
+      throw_at_line(path, line,
+                    "label " + std::to_string(label) + ": expected 0 (read), 1 (write), 2 (fetch) or 3 (escape)");
     batch.push_back({number<std::uint64_t>(address_text, path, line, "address", 16), static_cast<std::uint8_t>(label)});
     if (batch.size() == kBatch) {
       sink.address_accesses(batch);

@@ -19,11 +19,11 @@ struct LevelSize {
 using TextureLevels = std::vector<std::vector<LevelSize>>;
 
 struct TraceMetadata {
-  std::string scene;      // scene spec or mesh path
-  std::string ordering;   // triangle ordering name
-  std::uint32_t width = 0;   // frame resolution in pixels
+  std::string scene;        // scene spec or mesh path
+  std::string ordering;     // triangle ordering name
+  std::uint32_t width = 0;  // frame resolution in pixels
   std::uint32_t height = 0;
-  std::string filter;     // texture filter mode ("nearest", "bilinear", "trilinear", ...)
+  std::string filter;        // texture filter mode ("nearest", "bilinear", "trilinear", ...)
   std::string tool_version;  // filled by the writer when empty
   TextureLevels textures;
   std::map<std::string, std::string> extra;  // anything else worth recording

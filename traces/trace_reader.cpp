@@ -37,8 +37,10 @@ std::string printable(const char* bytes, std::size_t n) {
   std::string s;
   for (std::size_t i = 0; i < n; ++i) {
     const unsigned char c = static_cast<unsigned char>(bytes[i]);
-    if (c >= 32 && c < 127) s += static_cast<char>(c);
-    else s += "\\x" + hex(c).substr(2);
+    if (c >= 32 && c < 127)
+      s += static_cast<char>(c);
+    else
+      s += "\\x" + hex(c).substr(2);
   }
   return s;
 }
@@ -89,11 +91,13 @@ void load_chunk(const TraceLayout& file, ChunkSource& src, std::size_t i, Decode
   if (!src.in) throw_at_byte(path, info.offset, where + "read failed");
   const std::uint32_t computed = crc32c(src.stored.data(), stored, crc32c(h, 28));
   if (computed != crc)
-    throw_at_byte(path, info.offset, where + "checksum mismatch (stored " + hex(crc) + ", computed " + hex(computed) + ")");
+    throw_at_byte(path, info.offset,
+                  where + "checksum mismatch (stored " + hex(crc) + ", computed " + hex(computed) + ")");
   if (kind != static_cast<std::uint8_t>(info.kind) || records != info.records || first != info.first_record)
     throw_at_byte(path, info.offset, where + "header disagrees with the chunk index");
   // Every encoding uses at most 8 bytes per field: a larger claim is corruption, not a big chunk.
-  if (raw_bytes > std::uint64_t{records} * 64 + 4096) throw_at_byte(path, info.offset, where + "implausible decoded size");
+  if (raw_bytes > std::uint64_t{records} * 64 + 4096)
+    throw_at_byte(path, info.offset, where + "implausible decoded size");
   src.raw.resize(raw_bytes);
   const std::size_t got = ZSTD_decompressDCtx(src.dctx, src.raw.data(), src.raw.size(), src.stored.data(), stored);
   if (ZSTD_isError(got) || got != raw_bytes)
@@ -104,9 +108,15 @@ void load_chunk(const TraceLayout& file, ChunkSource& src, std::size_t i, Decode
   std::string error;
   // Only the decoded kind's vector is resized (no clearing: that would zero-fill it again).
   switch (info.kind) {
-    case RecordKind::Vertex: error = decode_vertex_records(src.raw, records, out.draw, out.vertices); break;
-    case RecordKind::Texel: error = decode_texel_records(src.raw, records, out.texels); break;
-    default: error = decode_address_records(src.raw, records, out.addresses); break;
+    case RecordKind::Vertex:
+      error = decode_vertex_records(src.raw, records, out.draw, out.vertices);
+      break;
+    case RecordKind::Texel:
+      error = decode_texel_records(src.raw, records, out.texels);
+      break;
+    default:
+      error = decode_address_records(src.raw, records, out.addresses);
+      break;
   }
   if (!error.empty()) throw_at_byte(path, info.offset, where + error);
 }
@@ -139,22 +149,22 @@ struct Slot {
 // Every field below `mutex` is guarded by it, except a Busy slot's `decoded`, which belongs to
 // the thread decoding into it until it marks the slot Ready under the lock.
 struct TraceReader::ReadState {
-  ChunkSource caller;                     // the caller's thread
-  std::unique_ptr<ChunkSource> ahead;     // the read-ahead thread
+  ChunkSource caller;                  // the caller's thread
+  std::unique_ptr<ChunkSource> ahead;  // the read-ahead thread
   // Opened with the caller's stream, so both read the same file even if the path is replaced
   // (written atomically by rename) before the first in-order read starts the thread.
   std::ifstream ahead_stream;
-  std::array<Slot, 3> slots;              // one held by the caller, one per decoding thread
+  std::array<Slot, 3> slots;  // one held by the caller, one per decoding thread
   std::size_t held = kNone;
   bool enabled = read_ahead_by_default();
-  bool broken = false;                    // the thread could not start: read in the caller only
+  bool broken = false;  // the thread could not start: read in the caller only
   bool wanted[4] = {false, true, true, true};
-  std::size_t last = kNone;               // the chunk read last
-  std::size_t cursor = kNone;             // the next chunk to read ahead, kNone: none
+  std::size_t last = kNone;    // the chunk read last
+  std::size_t cursor = kNone;  // the next chunk to read ahead, kNone: none
   bool stop = false;
   std::mutex mutex;
-  std::condition_variable work;           // to the read-ahead thread: a slot or a chunk to read
-  std::condition_variable done;           // to the caller: a slot became Ready
+  std::condition_variable work;  // to the read-ahead thread: a slot or a chunk to read
+  std::condition_variable done;  // to the caller: a slot became Ready
   std::thread thread;
 
   explicit ReadState(std::ifstream in) : caller(std::move(in)) {}
@@ -245,19 +255,24 @@ TraceReader::TraceReader(const std::string& path) : path_(path) {
   std::uint8_t fixed[16];
   in_.read(reinterpret_cast<char*>(fixed), 16);
   if (in_.gcount() < 8 || std::memcmp(fixed, kTraceMagic, 8) != 0)
-    throw_at_byte(path, 0, "not a rastrace trace: magic '" +
-                               printable(reinterpret_cast<const char*>(fixed), static_cast<std::size_t>(std::min<std::streamsize>(in_.gcount(), 8))) +
-                               "', expected 'RASTRACE'");
-  if (in_.gcount() < 16) throw_at_byte(path, static_cast<std::uint64_t>(in_.gcount()), "truncated header: expected 16 bytes");
+    throw_at_byte(path, 0,
+                  "not a rastrace trace: magic '" +
+                      printable(reinterpret_cast<const char*>(fixed),
+                                static_cast<std::size_t>(std::min<std::streamsize>(in_.gcount(), 8))) +
+                      "', expected 'RASTRACE'");
+  if (in_.gcount() < 16)
+    throw_at_byte(path, static_cast<std::uint64_t>(in_.gcount()), "truncated header: expected 16 bytes");
   const std::uint32_t version = load<std::uint32_t>(fixed + 8);
   if (version != kTraceVersion)
-    throw_at_byte(path, 8, "unknown trace version " + std::to_string(version) + ": this rastrace reads version " +
-                               std::to_string(kTraceVersion));
+    throw_at_byte(path, 8,
+                  "unknown trace version " + std::to_string(version) + ": this rastrace reads version " +
+                      std::to_string(kTraceVersion));
   const std::uint32_t json_bytes = load<std::uint32_t>(fixed + 12);
   const std::uint64_t header_end = 16 + std::uint64_t{json_bytes} + 4;
   if (header_end > file_bytes_)
-    throw_at_byte(path, 12, "truncated metadata header: " + std::to_string(json_bytes) + " bytes announced, file has " +
-                                std::to_string(file_bytes_));
+    throw_at_byte(path, 12,
+                  "truncated metadata header: " + std::to_string(json_bytes) + " bytes announced, file has " +
+                      std::to_string(file_bytes_));
   std::string json(json_bytes, '\0');
   in_.read(json.data(), json_bytes);
   std::uint8_t crc_bytes[4];
@@ -265,8 +280,8 @@ TraceReader::TraceReader(const std::string& path) : path_(path) {
   const std::uint32_t stored_crc = load<std::uint32_t>(crc_bytes);
   const std::uint32_t computed = crc32c(json.data(), json.size());
   if (stored_crc != computed)
-    throw_at_byte(path, 16, "metadata header checksum mismatch (stored " + hex(stored_crc) + ", computed " +
-                                hex(computed) + ")");
+    throw_at_byte(path, 16,
+                  "metadata header checksum mismatch (stored " + hex(stored_crc) + ", computed " + hex(computed) + ")");
   metadata_ = metadata_from_json(json, path);
 
   // Footer and index.
@@ -278,8 +293,8 @@ TraceReader::TraceReader(const std::string& path) : path_(path) {
   index_offset_ = load<std::uint64_t>(footer);
   const std::uint32_t index_crc = load<std::uint32_t>(footer + 8);
   if (index_offset_ < header_end || index_offset_ + 16 > file_bytes_ - kFooterBytes)
-    throw_at_byte(path, file_bytes_ - kFooterBytes, "chunk index offset " + std::to_string(index_offset_) +
-                                                        " outside the file");
+    throw_at_byte(path, file_bytes_ - kFooterBytes,
+                  "chunk index offset " + std::to_string(index_offset_) + " outside the file");
   std::vector<std::uint8_t> index(file_bytes_ - kFooterBytes - index_offset_);
   in_.seekg(static_cast<std::streamoff>(index_offset_));
   in_.read(reinterpret_cast<char*>(index.data()), static_cast<std::streamsize>(index.size()));
@@ -302,8 +317,8 @@ TraceReader::TraceReader(const std::string& path) : path_(path) {
       throw_at_byte(path, index_offset_ + 16 + i * 24, "chunk index entry " + std::to_string(i) + " is invalid");
     c.kind = static_cast<RecordKind>(kind);
     if (c.first_record != counts_[kind])
-      throw_at_byte(path, index_offset_ + 16 + i * 24, "chunk index entry " + std::to_string(i) +
-                                                           ": records out of sequence");
+      throw_at_byte(path, index_offset_ + 16 + i * 24,
+                    "chunk index entry " + std::to_string(i) + ": records out of sequence");
     counts_[kind] += c.records;
     previous_end = c.offset + kChunkHeaderBytes;
     chunks_.push_back(c);
@@ -326,14 +341,15 @@ void TraceReader::fail_truncated(std::ifstream& in_, std::uint64_t header_end) {
     if (load<std::uint32_t>(h) != kChunkTag) break;
     const std::uint64_t end = offset + kChunkHeaderBytes + load<std::uint32_t>(h + 12);
     if (end > file_bytes_)
-      throw_at_byte(path_, offset, "truncated trace: chunk " + std::to_string(chunk) + " needs " +
-                                       std::to_string(end - offset) + " bytes, the file ends after " +
-                                       std::to_string(file_bytes_ - offset));
+      throw_at_byte(path_, offset,
+                    "truncated trace: chunk " + std::to_string(chunk) + " needs " + std::to_string(end - offset) +
+                        " bytes, the file ends after " + std::to_string(file_bytes_ - offset));
     offset = end;
     ++chunk;
   }
-  throw_at_byte(path_, offset, "truncated trace: no chunk index and footer after chunk " +
-                                   std::to_string(chunk) + " (the writer did not finish)");
+  throw_at_byte(path_, offset,
+                "truncated trace: no chunk index and footer after chunk " + std::to_string(chunk) +
+                    " (the writer did not finish)");
 }
 
 void TraceReader::set_read_ahead(bool enabled) {
@@ -353,7 +369,8 @@ void TraceReader::set_read_ahead_kinds(ReplayKinds kinds) {
 
 const DecodedChunk& TraceReader::read_chunk(std::size_t i) {
   if (i >= chunks_.size())
-    throw std::out_of_range("TraceReader::read_chunk: chunk " + std::to_string(i) + " of " + std::to_string(chunks_.size()));
+    throw std::out_of_range("TraceReader::read_chunk: chunk " + std::to_string(i) + " of " +
+                            std::to_string(chunks_.size()));
   const TraceLayout file{path_, chunks_, index_offset_};
   ReadState& s = *state_;
   std::unique_lock lock(s.mutex);
@@ -439,8 +456,12 @@ void replay_trace(TraceReader& reader, EventSink& sink, ReplayKinds kinds, Progr
         if (!chunk.vertices.empty()) sink.vertex_fetches(chunk.vertices);
         if (chunk.flags & kChunkEndsDraw) sink.end_draw();
         break;
-      case RecordKind::Texel: sink.texel_accesses(chunk.texels); break;
-      default: sink.address_accesses(chunk.addresses); break;
+      case RecordKind::Texel:
+        sink.texel_accesses(chunk.texels);
+        break;
+      default:
+        sink.address_accesses(chunk.addresses);
+        break;
     }
     if (progress) progress->advance(info.records);
   }

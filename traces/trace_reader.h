@@ -100,7 +100,9 @@ struct VertexBatch {
 
 class VertexTraceReader {
  public:
-  explicit VertexTraceReader(const std::string& path) : reader_(path) { reader_.set_read_ahead_kinds({true, false, false}); }
+  explicit VertexTraceReader(const std::string& path) : reader_(path) {
+    reader_.set_read_ahead_kinds({true, false, false});
+  }
   const TraceMetadata& metadata() const { return reader_.metadata(); }
   std::uint64_t records() const { return reader_.records(RecordKind::Vertex); }
   // The next batch (one chunk); false at the end of the file.
@@ -114,7 +116,9 @@ class VertexTraceReader {
 
 class TexelTraceReader {
  public:
-  explicit TexelTraceReader(const std::string& path) : reader_(path) { reader_.set_read_ahead_kinds({false, true, false}); }
+  explicit TexelTraceReader(const std::string& path) : reader_(path) {
+    reader_.set_read_ahead_kinds({false, true, false});
+  }
   const TraceMetadata& metadata() const { return reader_.metadata(); }
   std::uint64_t records() const { return reader_.records(RecordKind::Texel); }
   bool next(std::span<const TexelAccess>& batch);

@@ -61,8 +61,8 @@ void TraceWriter::write(const void* data, std::size_t size) {
 void TraceWriter::write_chunk(RecordKind kind, std::uint8_t flags, std::uint32_t records) {
   const std::size_t bound = ZSTD_compressBound(raw_.size());
   compressed_.resize(bound);
-  const std::size_t stored = ZSTD_compressCCtx(state_->cctx, compressed_.data(), bound, raw_.data(), raw_.size(),
-                                               options_.zstd_level);
+  const std::size_t stored =
+      ZSTD_compressCCtx(state_->cctx, compressed_.data(), bound, raw_.data(), raw_.size(), options_.zstd_level);
   if (ZSTD_isError(stored)) throw std::runtime_error(std::string("zstd: ") + ZSTD_getErrorName(stored));
   std::uint64_t& count = counts_[static_cast<int>(kind)];
   std::string header;
@@ -86,8 +86,8 @@ void TraceWriter::flush_vertices(bool ends_draw) {
   if (!draw_open_) return;
   if (vertices_.empty() && draw_started_ && !ends_draw) return;
   encode_vertex_records(draw_, vertices_, raw_);
-  const std::uint8_t flags = static_cast<std::uint8_t>((draw_started_ ? 0 : kChunkStartsDraw) |
-                                                       (ends_draw ? kChunkEndsDraw : 0));
+  const std::uint8_t flags =
+      static_cast<std::uint8_t>((draw_started_ ? 0 : kChunkStartsDraw) | (ends_draw ? kChunkEndsDraw : 0));
   write_chunk(RecordKind::Vertex, flags, static_cast<std::uint32_t>(vertices_.size()));
   vertices_.clear();
   draw_started_ = true;

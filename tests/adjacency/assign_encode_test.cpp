@@ -72,7 +72,8 @@ TEST_P(AssignmentOnPaperMeshes, IsPerfectAndRestricted) {
   // paths were needed and worked.
   EXPECT_GT(b.assignment.repaired_components, 0u);
   std::uint32_t assigned = 0;
-  for (std::uint32_t f = 0; f < b.dual.face_count; ++f) assigned += b.cover.in_cover[f] && b.assignment.partner[f] != kNoFace;
+  for (std::uint32_t f = 0; f < b.dual.face_count; ++f)
+    assigned += b.cover.in_cover[f] && b.assignment.partner[f] != kNoFace;
   EXPECT_EQ(assigned, b.dual.face_count - b.cover.size);
 }
 

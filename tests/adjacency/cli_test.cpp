@@ -61,8 +61,8 @@ TEST(AdjacencyCommand, EdgeStageCountsEveryFaceAndEdgeOnceAndWritesTheLines) {
   const std::string mesh = testing::data_file("meshes/triceratops.off");
   const std::filesystem::path image = std::filesystem::temp_directory_path() / "rastrace_adjacency_lines.png";
   std::filesystem::remove(image);
-  const CommandRun r =
-      run("adjacency " + mesh + " --order careful --edges --size 256 --lines " + image.string() + " --format json --no-time");
+  const CommandRun r = run("adjacency " + mesh + " --order careful --edges --size 256 --lines " + image.string() +
+                           " --format json --no-time");
   ASSERT_EQ(r.status, 0) << r.out;
   const nlohmann::json rows = nlohmann::json::parse(r.out);
   ASSERT_EQ(rows.size(), 1u);

@@ -52,7 +52,8 @@ TEST_P(CoverOnPaperMeshes, IsMinimalCoversHalfTheFacesAndIsWithinFourPercentOfTh
 }
 
 INSTANTIATE_TEST_SUITE_P(Sander2008, CoverOnPaperMeshes,
-                         ::testing::Values(PaperMesh{"fandisk.off", 19419, 697}, PaperMesh{"triceratops.off", 8490, 637},
+                         ::testing::Values(PaperMesh{"fandisk.off", 19419, 697},
+                                           PaperMesh{"triceratops.off", 8490, 637},
                                            PaperMesh{"bunny00.off", 113112, 9392}),
                          [](const auto& info) {
                            std::string name = info.param.file;

@@ -34,8 +34,8 @@ TEST(EdgeStage, ProcessesEveryFaceAndEveryEdgeOfBunnyExactlyOnce) {
   EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(topology.edge_count()));
 
   // Vertex shader invocations are the post-transform cache misses of the index stream.
-  const VertexStreamStats stats = simulate_vertex_stream(ordered.indices, PrimitiveType::TriangleListAdjacency,
-                                                         VertexCachePolicy::Fifo, 24);
+  const VertexStreamStats stats =
+      simulate_vertex_stream(ordered.indices, PrimitiveType::TriangleListAdjacency, VertexCachePolicy::Fifo, 24);
   EXPECT_EQ(result.pipeline.vertices_shaded, stats.misses);
   EXPECT_EQ(result.pipeline.lookups, 6 * ordered.size());
 

@@ -13,11 +13,11 @@
 namespace rastrace {
 namespace {
 
-double misses_per_vertex(const Mesh& mesh, const AdjacencyPrimitives& primitives, const std::vector<std::uint32_t>& order,
-                         unsigned cache = 24) {
+double misses_per_vertex(const Mesh& mesh, const AdjacencyPrimitives& primitives,
+                         const std::vector<std::uint32_t>& order, unsigned cache = 24) {
   const AdjacencyPrimitives ordered = permute_primitives(primitives, order);
-  const VertexStreamStats stats = simulate_vertex_stream(ordered.indices, PrimitiveType::TriangleListAdjacency,
-                                                         VertexCachePolicy::Fifo, cache);
+  const VertexStreamStats stats =
+      simulate_vertex_stream(ordered.indices, PrimitiveType::TriangleListAdjacency, VertexCachePolicy::Fifo, cache);
   EXPECT_EQ(stats.lookups, 6 * primitives.size());
   return double(stats.misses) / double(mesh.vertex_count());
 }

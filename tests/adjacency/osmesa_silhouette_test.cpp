@@ -1,18 +1,18 @@
 // The cross-check of the edge stage: the same adjacency primitives drawn by a real geometry shader
 // on GL_TRIANGLES_ADJACENCY (OSMesa, llvmpipe, a GL 3.2 core context), which emits the silhouette
 // edges as lines, against rastrace's pipeline + EdgeStage. The shader uses the same facing test
-// (sign of det[x y w], from the face's lowest vertex id) and reads the vertex ids to decode duplicated indices. Lines can differ by
-// a pixel where the two rasterizers round a line's position differently (edge ownership), so the
-// pixels are compared exactly and within one pixel.
-#include <GL/osmesa.h>
+// (sign of det[x y w], from the face's lowest vertex id) and reads the vertex ids to decode duplicated indices. Lines
+// can differ by a pixel where the two rasterizers round a line's position differently (edge ownership), so the pixels
+// are compared exactly and within one pixel.
 #include <GL/glcorearb.h>
+#include <GL/osmesa.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -83,8 +83,17 @@ F gl(const char* name) {
 std::vector<std::uint8_t> draw_with_geometry_shader(const Mesh& mesh, const std::vector<std::uint32_t>& indices,
                                                     const glm::mat4& mvp, std::string* renderer) {
   setenv("GALLIUM_DRIVER", "llvmpipe", 1);
-  const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                            OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 2, 0};
+  const int attributes[] = {OSMESA_FORMAT,
+                            OSMESA_RGBA,
+                            OSMESA_DEPTH_BITS,
+                            24,
+                            OSMESA_PROFILE,
+                            OSMESA_CORE_PROFILE,
+                            OSMESA_CONTEXT_MAJOR_VERSION,
+                            3,
+                            OSMESA_CONTEXT_MINOR_VERSION,
+                            2,
+                            0};
   OSMesaContext context = OSMesaCreateContextAttribs(attributes, nullptr);
   if (!context) {
     ADD_FAILURE() << "no GL 3.2 core context from OSMesa";
@@ -168,7 +177,8 @@ std::vector<std::uint8_t> draw_with_geometry_shader(const Mesh& mesh, const std:
     ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
     lit.assign(std::size_t(kSize) * kSize, 0);
     for (int row = 0; row < kSize; ++row)  // OSMesa's row 0 is the bottom
-      for (int x = 0; x < kSize; ++x) lit[std::size_t(kSize - 1 - row) * kSize + x] = rgba[4 * (std::size_t(row) * kSize + x)] > 127;
+      for (int x = 0; x < kSize; ++x)
+        lit[std::size_t(kSize - 1 - row) * kSize + x] = rgba[4 * (std::size_t(row) * kSize + x)] > 127;
   }();
   OSMesaDestroyContext(context);
   return lit;
@@ -262,8 +272,8 @@ TEST(OsmesaCrossCheck, GeometryShaderSilhouetteOfBunnyMatchesTheEdgeStage) {
   const double ours_near = matched_fraction(mine, theirs, 1, &mine_lit);
   const double theirs_near = matched_fraction(theirs, mine, 1, &theirs_lit);
   RecordProperty("renderer", renderer);
-  std::cout << "[ silhouette ] " << renderer << ": " << ours.edges.silhouette_edges << " silhouette edges, "
-            << mine_lit << " pixels (rastrace), " << theirs_lit << " (geometry shader), " << same
+  std::cout << "[ silhouette ] " << renderer << ": " << ours.edges.silhouette_edges << " silhouette edges, " << mine_lit
+            << " pixels (rastrace), " << theirs_lit << " (geometry shader), " << same
             << " identical; within 1 pixel: " << ours_near << " / " << theirs_near << "\n";
   EXPECT_GT(ours.edges.silhouette_edges, 1000u);
   EXPECT_GT(mine_lit, 1500u);  // 512 x 512: 1664 pixels, 1663 of them identical

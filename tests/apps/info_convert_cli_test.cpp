@@ -12,8 +12,8 @@
 namespace rastrace {
 namespace {
 
-using ::testing::HasSubstr;
 using testing::data_file;
+using ::testing::HasSubstr;
 using testing::run_rastrace_cli;
 using testing::TempDir;
 
@@ -41,7 +41,8 @@ TEST(InfoCommand, BuiltinBunnyPrintsATableWithItsCounts) {
 
 TEST(InfoCommand, MultiObjectSceneGivesTotalsAndPerObjectFigures) {
   const std::string example =
-      (std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "docs" / "example_scene.json").string();
+      (std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "docs" / "example_scene.json")
+          .string();
   const auto result = run_rastrace_cli({"info", example, "--json"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const auto json = nlohmann::json::parse(result.out);

@@ -75,8 +75,8 @@ std::vector<Geometry> geometries() {
         if (assoc && size / line < assoc) continue;
         g.push_back({size, line, assoc});
       }
-  g.push_back({4096, 16, 32});  // hashed engine with several sets
-  g.push_back({3 * 1024, 64, 3});  // 16 sets of 3 ways
+  g.push_back({4096, 16, 32});       // hashed engine with several sets
+  g.push_back({3 * 1024, 64, 3});    // 16 sets of 3 ways
   g.push_back({5 * 64 * 4, 64, 4});  // 5 sets: not a power of two
   return g;
 }
@@ -139,7 +139,8 @@ TEST(ByteCacheDifferential, ThreeCSplitMatchesDineroDefinitions) {
     for (const Geometry& g : geometries()) {
       CacheBankConfig bank;
       for (auto policy : {ReplacementPolicy::Lru, ReplacementPolicy::Fifo})
-        bank.address.push_back({g.size, static_cast<std::uint32_t>(g.line), static_cast<std::uint32_t>(g.assoc), policy, 1});
+        bank.address.push_back(
+            {g.size, static_cast<std::uint32_t>(g.line), static_cast<std::uint32_t>(g.assoc), policy, 1});
       LiveBankSink sink(bank, {});
       std::vector<AddressAccess> accesses;
       for (const std::uint64_t a : trace.addresses) accesses.push_back({a, 0});
@@ -152,7 +153,8 @@ TEST(ByteCacheDifferential, ThreeCSplitMatchesDineroDefinitions) {
         ASSERT_TRUE(s.has_three_c);
         EXPECT_EQ(s.compulsory, compulsory) << trace.name;
         EXPECT_EQ(s.capacity, static_cast<std::int64_t>(fa_lru - compulsory)) << trace.name;
-        EXPECT_EQ(static_cast<std::int64_t>(s.compulsory) + s.capacity + s.conflict, static_cast<std::int64_t>(s.misses));
+        EXPECT_EQ(static_cast<std::int64_t>(s.compulsory) + s.capacity + s.conflict,
+                  static_cast<std::int64_t>(s.misses));
         EXPECT_EQ(s.bytes_fetched, s.misses * g.line);
         EXPECT_EQ(s.hits + s.misses, trace.addresses.size());
       }

@@ -13,9 +13,9 @@
 
 #include "cache_sim/live_bank_sink.h"
 #include "naive_cache.h"
-#include "tests/support/synthetic_frame.h"
 #include "support/run_rastrace.h"
 #include "support/test_data.h"
+#include "tests/support/synthetic_frame.h"
 #include "traces/trace_reader.h"
 #include "traces/trace_writer.h"
 
@@ -28,7 +28,8 @@ using ToolRun = testing::CommandRun;
 ToolRun run(const std::string& arguments) { return testing::run_rastrace(arguments); }
 
 std::string temp(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("rastrace_cli_" + std::to_string(::getpid()) + "_" + name)).string();
+  return (std::filesystem::temp_directory_path() / ("rastrace_cli_" + std::to_string(::getpid()) + "_" + name))
+      .string();
 }
 
 TEST(SweepCommand, DinSweepGivesTheNaiveReferenceMissesForEveryConfiguration) {
@@ -40,7 +41,8 @@ TEST(SweepCommand, DinSweepGivesTheNaiveReferenceMissesForEveryConfiguration) {
     std::ofstream out(din);
     for (const std::uint64_t a : addresses) out << (a % 3) << ' ' << std::hex << a << std::dec << '\n';
   }
-  const ToolRun r = run("sweep " + din + " --size 256B..2KiB --line 16B,64B --assoc 1,2,full --policy fifo,lru,random,opt --format json");
+  const ToolRun r = run(
+      "sweep " + din + " --size 256B..2KiB --line 16B,64B --assoc 1,2,full --policy fifo,lru,random,opt --format json");
   std::filesystem::remove(din);
   ASSERT_EQ(r.status, 0) << r.out;
   const nlohmann::json rows = nlohmann::json::parse(r.out);
@@ -77,20 +79,22 @@ TEST(ReplayCommand, ReplayTableStatesItsParametersAndMatchesTheLiveBank) {
   live.texel_accesses(frame.texels);
   live.finish();
 
-  const ToolRun r = run("replay " + path + " --cache size=4KiB,line=64B,assoc=2,policy=lru,layout=block4 "
-                    "--cache size=4KiB,assoc=full,policy=opt,layout=morton --format csv");
+  const ToolRun r = run("replay " + path +
+                        " --cache size=4KiB,line=64B,assoc=2,policy=lru,layout=block4 "
+                        "--cache size=4KiB,assoc=full,policy=opt,layout=morton --format csv");
   ASSERT_EQ(r.status, 0) << r.out;
-  for (const char* parameter : {"# scene: synthetic", "# ordering: scanline", "# resolution: 64x64", "# filter: bilinear",
-                                "# texel_bytes: 4", "# level_alignment_bytes: 4096", "# source: texel"})
+  for (const char* parameter :
+       {"# scene: synthetic", "# ordering: scanline", "# resolution: 64x64", "# filter: bilinear", "# texel_bytes: 4",
+        "# level_alignment_bytes: 4096", "# source: texel"})
     EXPECT_THAT(r.out, HasSubstr(parameter));
   EXPECT_THAT(r.out, HasSubstr("4096,64,2,lru,block4,16384," + std::to_string(live.texture_stats()[0].hits) + "," +
-                                   std::to_string(live.texture_stats()[0].misses) + ","));
+                               std::to_string(live.texture_stats()[0].misses) + ","));
   EXPECT_THAT(r.out, HasSubstr("4096,64,0,opt,morton,16384," + std::to_string(live.texture_stats()[1].hits) + "," +
-                                   std::to_string(live.texture_stats()[1].misses) + ","));
+                               std::to_string(live.texture_stats()[1].misses) + ","));
 
   const std::string plot = temp("plot.svg");
   const ToolRun s = run("sweep " + path + " --size 1KiB..8KiB --policy lru,fifo --layout linear,morton --plot " + plot +
-                    " --format latex");
+                        " --format latex");
   EXPECT_EQ(s.status, 0) << s.out;
   EXPECT_THAT(s.out, HasSubstr("\\toprule"));
   EXPECT_TRUE(std::filesystem::exists(plot));

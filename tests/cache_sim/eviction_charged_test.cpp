@@ -40,7 +40,8 @@ TEST(EvictionCharged, MatchesTheRuleWrittenOutOnRandomStreams) {
   for (const unsigned entries : {3u, 4u, 8u, 16u, 32u}) {
     std::vector<std::uint32_t> indices;
     for (int i = 0; i < 12000; ++i) indices.push_back(random() % (i % 5 == 0 ? 20 : 200));  // some repeats
-    EXPECT_EQ(eviction_charged_transforms(indices, PrimitiveType::TriangleList, entries), naive_charged(indices, entries))
+    EXPECT_EQ(eviction_charged_transforms(indices, PrimitiveType::TriangleList, entries),
+              naive_charged(indices, entries))
         << entries << " entries";
   }
 }
@@ -87,9 +88,10 @@ TEST(EvictionCharged, StripSwapsAndJoinsAreNotCharged) {
   // exactly as the list of the triangles it draws.
   const std::vector<std::uint32_t> strip = {0, 1, 2, 3, 3, 2, 4, 5, 5, 9, 9, 8, 10, 11, 12, 13};
   std::vector<std::uint32_t> drawn;
-  for_each_triangle(strip, PrimitiveType::TriangleStrip, kNoRestart, [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    if (a != b && b != c && a != c) drawn.insert(drawn.end(), {a, b, c});
-  });
+  for_each_triangle(strip, PrimitiveType::TriangleStrip, kNoRestart,
+                    [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+                      if (a != b && b != c && a != c) drawn.insert(drawn.end(), {a, b, c});
+                    });
   ASSERT_EQ(drawn.size(), 3u * 8u);  // 14 assembled, 6 of them degenerate
   for (const unsigned entries : {3u, 4u, 6u})
     EXPECT_EQ(eviction_charged_transforms(strip, PrimitiveType::TriangleStrip, entries, kNoRestart),

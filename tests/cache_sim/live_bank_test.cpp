@@ -64,8 +64,9 @@ TEST(LiveBankSink, VertexStatisticsEqualSimulateVertexStreamForListsAndStrips) {
   send_index_buffer(strips, 0, PrimitiveType::TriangleStrip, strip, 0xFFFF);
   strips.finish();
   for (std::size_t i = 0; i < config.vertex.size(); ++i)
-    expect_same(strips.vertex_stats()[i], simulate_vertex_stream(strip, PrimitiveType::TriangleStrip,
-                                                                 config.vertex[i].policy, config.vertex[i].entries, 0xFFFF));
+    expect_same(strips.vertex_stats()[i],
+                simulate_vertex_stream(strip, PrimitiveType::TriangleStrip, config.vertex[i].policy,
+                                       config.vertex[i].entries, 0xFFFF));
   EXPECT_EQ(strips.vertex_stats()[0].degenerate, 5u);  // 4 in the first strip, (2,2,3) in the last
 }
 
@@ -97,7 +98,8 @@ TEST(LiveBankSink, ReplayingTheWrittenTraceGivesTheLiveStatisticsExactly) {
   CacheBankConfig config;
   config.vertex = {{VertexCachePolicy::Fifo, 12}, {VertexCachePolicy::Lru, 16}};
   for (const char* layout : {"linear", "block4", "morton"})
-    for (auto policy : {ReplacementPolicy::Lru, ReplacementPolicy::Fifo, ReplacementPolicy::Random, ReplacementPolicy::Opt})
+    for (auto policy :
+         {ReplacementPolicy::Lru, ReplacementPolicy::Fifo, ReplacementPolicy::Random, ReplacementPolicy::Opt})
       config.texture.push_back({CacheConfig{1024, 64, 2, policy, 7}, parse_layout(layout)});
   config.vertex_buffer.push_back({CacheConfig{512, 32, 0, ReplacementPolicy::Lru, 1}, 32});
   const std::string path =
@@ -130,7 +132,8 @@ TEST(LiveBankSink, ReplayingTheWrittenTraceGivesTheLiveStatisticsExactly) {
   LiveBankSink replayed(config, TraceReader(path).metadata().textures);
   TraceReader reader(path);
   replay_trace(reader, replayed);
-  for (std::size_t i = 0; i < config.vertex.size(); ++i) expect_same(replayed.vertex_stats()[i], live.vertex_stats()[i]);
+  for (std::size_t i = 0; i < config.vertex.size(); ++i)
+    expect_same(replayed.vertex_stats()[i], live.vertex_stats()[i]);
   for (std::size_t i = 0; i < config.texture.size(); ++i) {
     EXPECT_EQ(replayed.texture_stats()[i], live.texture_stats()[i]) << i;
     EXPECT_EQ(live.texture_stats()[i].accesses, 6400u);

@@ -22,7 +22,8 @@ TEST(MeshoptFifo, MissesEqualMeshoptAnalyzeVertexCacheOnCgalMeshesInEveryOrder) 
     std::vector<std::uint32_t> forsyth(n), tipsy(n);
     meshopt_optimizeVertexCache(forsyth.data(), mesh.indices.data(), n, vertices);
     meshopt_optimizeVertexCacheFifo(tipsy.data(), mesh.indices.data(), n, vertices, 16);
-    for (const std::vector<std::uint32_t>* order : std::initializer_list<const std::vector<std::uint32_t>*>{&mesh.indices, &forsyth, &tipsy})
+    for (const std::vector<std::uint32_t>* order :
+         std::initializer_list<const std::vector<std::uint32_t>*>{&mesh.indices, &forsyth, &tipsy})
       for (unsigned k : {4u, 5u, 8u, 12u, 16u, 20u, 24u, 32u, 48u, 64u}) {
         const VertexStreamStats ours =
             simulate_vertex_stream(*order, PrimitiveType::TriangleList, VertexCachePolicy::Fifo, k);

@@ -14,7 +14,8 @@ TEST(Units, ByteSizesWithBinaryPrefixes) {
   EXPECT_EQ(parse_byte_size("4096"), 4096u);
   EXPECT_EQ(format_byte_size(16384), "16KiB");
   EXPECT_EQ(format_byte_size(1536), "1536B");
-  for (const char* bad : {"", "16KB", "KiB", "0B", "-4", "1.5KiB", "16 KiB"}) EXPECT_THROW(parse_byte_size(bad), InputError) << bad;
+  for (const char* bad : {"", "16KB", "KiB", "0B", "-4", "1.5KiB", "16 KiB"})
+    EXPECT_THROW(parse_byte_size(bad), InputError) << bad;
 }
 
 TEST(Units, RangesArePowersOfTwoAndListsMayMixThem) {
@@ -36,7 +37,7 @@ TEST(TextureLayout, LinearIsRowMajorWithAlignedLevels) {
   const TextureLayout layout(parse_layout("linear"), {mip_chain_sizes(8, 4), {{3, 3}}});
   EXPECT_EQ(layout.address(0, 0, 0, 0), 0u);
   EXPECT_EQ(layout.address(0, 0, 5, 2), (2u * 8 + 5) * 4);
-  EXPECT_EQ(layout.address(0, 1, 1, 1), 4096u + (1 * 4 + 1) * 4);  // level 1 is 4x2 on the next page
+  EXPECT_EQ(layout.address(0, 1, 1, 1), 4096u + (1 * 4 + 1) * 4);      // level 1 is 4x2 on the next page
   EXPECT_EQ(layout.address(1, 0, 2, 2), 4u * 4096 + (2 * 3 + 2) * 4);  // levels 8x4 4x2 2x1 1x1, then texture 1
   EXPECT_TRUE(layout.contains(0, 3, 0, 0));
   EXPECT_FALSE(layout.contains(0, 4, 0, 0));
@@ -66,7 +67,7 @@ TEST(TextureLayout, MortonInterleavesXInTheEvenBits) {
   EXPECT_EQ(square.address(0, 0, 1, 0), 1u);
   EXPECT_EQ(square.address(0, 0, 0, 1), 2u);
   EXPECT_EQ(square.address(0, 0, 3, 5), 0b100111u);  // x=011, y=101 -> y2x2 y1x1 y0x0 = 10 01 11
-  const TextureLayout wide(spec, {{{8, 2}}});  // two 2x2... four 2x2 Morton tiles side by side
+  const TextureLayout wide(spec, {{{8, 2}}});        // two 2x2... four 2x2 Morton tiles side by side
   EXPECT_EQ(wide.address(0, 0, 2, 0), 4u);
   EXPECT_EQ(wide.address(0, 0, 7, 1), 15u);
   const TextureLayout npot(spec, {{{5, 3}}});  // padded to 8x4

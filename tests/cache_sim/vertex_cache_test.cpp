@@ -60,9 +60,7 @@ TEST(VertexCache, StripDegeneratesAreLookedUpButNotDrawn) {
   EXPECT_EQ(stats.triangles, 3u);
 }
 
-TEST(VertexCache, ZeroEntriesIsAnError) {
-  EXPECT_THROW(VertexCache(VertexCachePolicy::Fifo, 0), std::exception);
-}
+TEST(VertexCache, ZeroEntriesIsAnError) { EXPECT_THROW(VertexCache(VertexCachePolicy::Fifo, 0), std::exception); }
 
 }  // namespace
 }  // namespace rastrace

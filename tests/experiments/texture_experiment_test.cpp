@@ -18,7 +18,8 @@ namespace rastrace {
 namespace {
 
 std::string temporary_dir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("rastrace-test-" + name + "-" + std::to_string(::getpid()));
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("rastrace-test-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();
@@ -78,14 +79,17 @@ TEST(TextureExperiment, LiveRenderAgreesWithTheSweptTraceToTheMiss) {
   // `render` simulates its texture cache live; `texsweep` records the trace and replays it.
   // The spider's strips run across its five materials: every triangle keeps its face's texture.
   const std::string dir = temporary_dir("live");
-  for (const auto& [scene, order] : {std::pair{"builtin:bunny", "strip"}, {"builtin:bunny", "texgroup"},
-                                     {"builtin:spider", "strip"}, {"builtin:spider", "texgroup"}}) {
+  for (const auto& [scene, order] : {std::pair{"builtin:bunny", "strip"},
+                                     {"builtin:bunny", "texgroup"},
+                                     {"builtin:spider", "strip"},
+                                     {"builtin:spider", "texgroup"}}) {
     const std::string common = std::string(scene) + " --order " + order + " --cull back ";
     const auto live = nlohmann::json::parse(
         run("render " + common + "--tcache 4KiB,64B,full,lru --layout linear -o " + dir + "/frame.png --json"));
-    const auto swept = nlohmann::json::parse(
-        run("texsweep " + common + "--raster scanline --size 4KiB --line 64B --assoc full --policy lru --layout linear "
-            "--format json"));
+    const auto swept =
+        nlohmann::json::parse(run("texsweep " + common +
+                                  "--raster scanline --size 4KiB --line 64B --assoc full --policy lru --layout linear "
+                                  "--format json"));
     ASSERT_EQ(swept.size(), 1u);
     EXPECT_EQ(live[0]["texture_misses"], swept[0]["misses"]) << scene << " " << order;
     EXPECT_EQ(live[0]["texel_accesses"], swept[0]["accesses"]) << scene << " " << order;

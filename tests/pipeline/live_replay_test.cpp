@@ -1,8 +1,8 @@
 // Rendering with a live cache bank and replaying the trace written in the same pass give the
 // same statistics, to the miss (DESIGN.md: the event stream is the seam).
+#include <unistd.h>
 #include <filesystem>
 #include <string>
-#include <unistd.h>
 
 #include <gtest/gtest.h>
 

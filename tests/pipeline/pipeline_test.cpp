@@ -79,8 +79,8 @@ TEST(Pipeline, StripWithRestartAndDegeneratesFetchesEveryIndexAndKeepsOneWinding
   EXPECT_EQ(sink.draws[0].type, PrimitiveType::TriangleStrip);
   EXPECT_EQ(sink.draws[0].restart_index, R);
   // The same stream through cache_sim's model gives the same counts.
-  const VertexStreamStats model = simulate_vertex_stream(indices, PrimitiveType::TriangleStrip,
-                                                         VertexCachePolicy::Fifo, 16, R);
+  const VertexStreamStats model =
+      simulate_vertex_stream(indices, PrimitiveType::TriangleStrip, VertexCachePolicy::Fifo, 16, R);
   EXPECT_EQ(model.lookups, stats.lookups);
   EXPECT_EQ(model.misses, stats.vertices_shaded);
   EXPECT_EQ(model.triangles, stats.triangles);
@@ -136,7 +136,8 @@ class RecordingHook final : public PrimitiveHook {
 
 TEST(Pipeline, AdjacencyPrimitivesDrawTriangle024AndFetchAllSixIndices) {
   // Triangle 0 2 4 with its three neighbours' far vertices 1 3 5.
-  const Mesh mesh = clip_space_mesh({{-0.5f, -0.5f, 0}, {0, -1, 0}, {0.5f, -0.5f, 0}, {1, 1, 0}, {0, 0.5f, 0}, {-1, 1, 0}});
+  const Mesh mesh =
+      clip_space_mesh({{-0.5f, -0.5f, 0}, {0, -1, 0}, {0.5f, -0.5f, 0}, {1, 1, 0}, {0, 0.5f, 0}, {-1, 1, 0}});
   const std::vector<std::uint32_t> indices = {0, 1, 2, 3, 4, 5};
   DrawCall call;
   call.indices = indices;
@@ -177,8 +178,8 @@ TEST(Pipeline, NearPlaneClippingDrawsOnlyWhatIsInFrontOfTheCamera) {
   call.indices = indices;
   Framebuffer fb(64, 64, true);
   Pipeline pipeline(fb, PipelineOptions{}, nullptr);
-  const glm::mat4 projection = glm::mat4(glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0),
-                                         glm::vec4(0, 0, -1.0202f, -1), glm::vec4(0, 0, -0.20202f, 0));
+  const glm::mat4 projection = glm::mat4(glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, -1.0202f, -1),
+                                         glm::vec4(0, 0, -0.20202f, 0));
   pipeline.set_camera(glm::mat4(1.0f), projection);  // perspective, near 0.1, far 10
   pipeline.draw(mesh, glm::mat4(1.0f), call, {});
   EXPECT_EQ(pipeline.stats().clipped, 1u);
@@ -208,8 +209,10 @@ TEST(Pipeline, GuardBandAndFullSideClippingCoverTheSamePixels) {
     Pipeline pipeline(fb, options, nullptr);
     pipeline.draw(mesh, glm::mat4(1.0f), call, {});
     EXPECT_EQ(pipeline.stats().clipped, full ? 1u : 0u);
-    if (full) EXPECT_GE(pipeline.stats().rasterized, 2u);  // the viewport square as a fan
-    else EXPECT_EQ(pipeline.stats().rasterized, 1u);
+    if (full)
+      EXPECT_GE(pipeline.stats().rasterized, 2u);  // the viewport square as a fan
+    else
+      EXPECT_EQ(pipeline.stats().rasterized, 1u);
     counts[full].assign(fb.write_count(), fb.write_count() + 64 * 64);
   }
   EXPECT_EQ(counts[0], counts[1]);

@@ -190,8 +190,10 @@ TEST(Rasterizer, ScanlineAndTiledOrdersDrawTheSameImageFromTheSameTexelsInADiffe
   bool left_tile = false, order_ok = true;
   for (const auto& t : sb.texels) {
     const bool in_tile = t.pixel_x / 8 == tile_x && t.pixel_y / 8 == tile_y;
-    if (!in_tile) left_tile = true;
-    else if (left_tile) order_ok = false;
+    if (!in_tile)
+      left_tile = true;
+    else if (left_tile)
+      order_ok = false;
   }
   EXPECT_TRUE(order_ok);
   // Scanline: pixel rows never go back up by more than the quad's own second row.

@@ -1,8 +1,8 @@
 // `rastrace render` and `rastrace compare` as a user runs them.
+#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <string>
-#include <unistd.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -17,19 +17,21 @@ using testing::CommandRun;
 CommandRun run(const std::string& arguments) { return testing::run_rastrace(arguments); }
 
 std::string temp(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("rastrace-cli-" + std::to_string(::getpid()) + "-" + name)).string();
+  return (std::filesystem::temp_directory_path() / ("rastrace-cli-" + std::to_string(::getpid()) + "-" + name))
+      .string();
 }
 
 TEST(RenderCommand, PrintsTheFrameCostsAsJsonAndWritesTheImageAndTrace) {
   const std::string image = temp("grid.png"), trace = temp("grid.rtrace"), depth = temp("grid.exr");
-  const CommandRun r = run("render builtin:grid --size 160x120 -o " + image + " --trace " + trace + " --depth " + depth +
-                    " --raster tiled8 --vcache fifo:16 --tcache 8KiB,64B,2way,lru --layout morton --json");
+  const CommandRun r =
+      run("render builtin:grid --size 160x120 -o " + image + " --trace " + trace + " --depth " + depth +
+          " --raster tiled8 --vcache fifo:16 --tcache 8KiB,64B,2way,lru --layout morton --json");
   ASSERT_EQ(r.status, 0) << r.out;
   const nlohmann::json rows = nlohmann::json::parse(r.out);
   ASSERT_EQ(rows.size(), 1u);
   const nlohmann::json& row = rows[0];
-  EXPECT_EQ(row["triangles"], 2048);          // the 32x32 grid
-  EXPECT_EQ(row["vertices_shaded"], 2112);    // scanline grid, FIFO 16: 33 * 64
+  EXPECT_EQ(row["triangles"], 2048);        // the 32x32 grid
+  EXPECT_EQ(row["vertices_shaded"], 2112);  // scanline grid, FIFO 16: 33 * 64
   EXPECT_NEAR(row["acmr"].get<double>(), 1.031, 0.0005);
   EXPECT_GT(row["fragments_shaded"].get<std::int64_t>(), 5000);
   EXPECT_GT(row["texel_accesses"].get<std::int64_t>(), 4 * row["fragments_shaded"].get<std::int64_t>());

@@ -63,9 +63,10 @@ Scene flat_triangles_scene() {
   // Grid vertex (i, j) at pixel centre (8.5 + 12 i, 8.5 + 12 j).
   for (glm::vec3& p : grid.mesh.positions) p = world_of_pixel(8.5 + 48.0 * p.x, 8.5 + 48.0 * p.y);
   grid.mesh.uvs.clear();
-  grid.mesh.materials = {flat("red", 0.8f, 0.2f, 0.2f), flat("green", 0.2f, 0.8f, 0.2f),
-                         flat("blue", 0.2f, 0.2f, 0.8f), flat("grey", 0.6f, 0.6f, 0.6f)};
-  for (std::size_t f = 0; f < grid.mesh.face_count(); ++f) grid.mesh.face_material.push_back(static_cast<std::uint32_t>(f % 4));
+  grid.mesh.materials = {flat("red", 0.8f, 0.2f, 0.2f), flat("green", 0.2f, 0.8f, 0.2f), flat("blue", 0.2f, 0.2f, 0.8f),
+                         flat("grey", 0.6f, 0.6f, 0.6f)};
+  for (std::size_t f = 0; f < grid.mesh.face_count(); ++f)
+    grid.mesh.face_material.push_back(static_cast<std::uint32_t>(f % 4));
   scene.objects.push_back(grid);
 
   SceneObject skew;

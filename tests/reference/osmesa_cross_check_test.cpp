@@ -54,12 +54,14 @@ ImageDifference against(const Scene& scene, const RenderResult& ours, const Samp
   const Framebuffer& fb = ours.framebuffer;
   const ImageDifference d =
       compare_images(fb.width(), fb.height(), fb.colour(), reference.rgba.data(), fb.centre_on_edge());
-  std::printf("%-20s %-8s covered %6llu  >1: %.4f (off edge %llu)  >2: %.4f  >8: %.4f  max %3d  PSNR %6.2f dB  coverage diff %llu (near edge %llu, off edge %llu)\n",
-              scene.name.c_str(), to_string(driver), static_cast<unsigned long long>(d.covered), d.fraction(d.diff_gt_1),
-              static_cast<unsigned long long>(d.diff_gt_1_off_edge),
-              d.fraction(d.diff_gt_2), d.fraction(d.diff_gt_8), d.max_difference, d.psnr,
-              static_cast<unsigned long long>(d.coverage_differs), static_cast<unsigned long long>(d.coverage_differs_near_edge),
-              static_cast<unsigned long long>(d.coverage_differs_off_edge));
+  std::printf(
+      "%-20s %-8s covered %6llu  >1: %.4f (off edge %llu)  >2: %.4f  >8: %.4f  max %3d  PSNR %6.2f dB  coverage diff "
+      "%llu (near edge %llu, off edge %llu)\n",
+      scene.name.c_str(), to_string(driver), static_cast<unsigned long long>(d.covered), d.fraction(d.diff_gt_1),
+      static_cast<unsigned long long>(d.diff_gt_1_off_edge), d.fraction(d.diff_gt_2), d.fraction(d.diff_gt_8),
+      d.max_difference, d.psnr, static_cast<unsigned long long>(d.coverage_differs),
+      static_cast<unsigned long long>(d.coverage_differs_near_edge),
+      static_cast<unsigned long long>(d.coverage_differs_off_edge));
   if (const char* folder = std::getenv("RASTRACE_TEST_OUTPUT")) {
     std::string base = std::string(folder) + "/" + scene.name + "-";
     for (char& c : base)
@@ -108,7 +110,7 @@ TEST(OsmesaCrossCheck, FlatTrianglesWithEdgesThroughPixelCentresDifferOnlyInEdge
   const CrossCheck c = cross_check(scene, SamplerState{});
   EXPECT_EQ(max_writes(c.ours.framebuffer), 1u);
   for (const ImageDifference* d : {&c.softpipe, &c.llvmpipe}) {
-    EXPECT_GT(d->covered, 2300u);                  // 48 x 48 plus the skewed pair
+    EXPECT_GT(d->covered, 2300u);                 // 48 x 48 plus the skewed pair
     EXPECT_EQ(d->coverage_differs_off_edge, 0u);  // fill-rule differences only
     // Flat colours match exactly except where the drivers give a centre on a shared edge to the
     // other triangle (a different colour) or to none.

@@ -18,7 +18,8 @@ VertexStreamStats run_on_fifo(const std::string& algo, const Mesh& mesh, unsigne
   ReorderParams params;
   params.cache_size = target;
   const Ordering ordering = find_reorder_algorithm(algo).run(mesh, params);
-  return simulate_vertex_stream(ordering.indices, ordering.type, VertexCachePolicy::Fifo, simulated, ordering.restart_index);
+  return simulate_vertex_stream(ordering.indices, ordering.type, VertexCachePolicy::Fifo, simulated,
+                                ordering.restart_index);
 }
 
 // Transforms as Castano's simulator counted them, for the ordering `algo` makes for `target`.
@@ -115,7 +116,8 @@ TEST(GridOrders, MortonMatchesCastanoExactlyUnderHisAccounting) {
 TEST(GridOrders, CacheOfWidthPlusTwoTransformsEveryVertexOnce) {
   for (const int w : {4, 9, 16, 30}) {
     const Mesh grid = make_grid(w, w);
-    const VertexStreamStats stats = run_on_fifo("grid", grid, static_cast<unsigned>(w + 2), static_cast<unsigned>(w + 2));
+    const VertexStreamStats stats =
+        run_on_fifo("grid", grid, static_cast<unsigned>(w + 2), static_cast<unsigned>(w + 2));
     EXPECT_EQ(stats.misses, grid.vertex_count()) << w << "x" << w;
   }
 }
@@ -140,7 +142,7 @@ TEST(GridOrders, BaselinesWithinTenPercentOfCastano) {
     double acmr20, acmr16, acmr12;
   };
   const Published rows[] = {
-      {"morton", 0.719, 0.750, 0.812}, {"hilbert", 0.699, 0.754, 0.797}, {"kcache", 0.711, 0.766, 0.807},
+      {"morton", 0.719, 0.750, 0.812},  {"hilbert", 0.699, 0.754, 0.797}, {"kcache", 0.711, 0.766, 0.807},
       {"forsyth", 0.666, 0.699, 0.859}, {"tipsy", 0.658, 0.711, 0.758},
   };
   for (const Published& row : rows) {

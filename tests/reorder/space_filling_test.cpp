@@ -68,7 +68,8 @@ TEST(SpaceFilling, HilbertInThreeDimensionsStepsBetweenFaceAdjacentCells) {
   ASSERT_EQ(ordering.face_order.size(), std::size_t(n * n * n));
   for (std::size_t i = 1; i < ordering.face_order.size(); ++i) {
     const int a = int(ordering.face_order[i - 1]), b = int(ordering.face_order[i]);
-    const int dx = std::abs(a % n - b % n), dy = std::abs(a / n % n - b / n % n), dz = std::abs(a / (n * n) - b / (n * n));
+    const int dx = std::abs(a % n - b % n), dy = std::abs(a / n % n - b / n % n),
+              dz = std::abs(a / (n * n) - b / (n * n));
     EXPECT_EQ(dx + dy + dz, 1) << "step " << i;
   }
 }

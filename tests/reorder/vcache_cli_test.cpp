@@ -16,8 +16,10 @@ Result run(const std::string& arguments) { return rastrace::testing::run_rastrac
 TEST(VcacheCli, CastanoRowsAsCsv) {
   const Result r = run("vcache grid:16x16 --algo scanline,grid --cache 12,16,20 --format csv --no-time");
   ASSERT_EQ(r.status, 0) << r.out;
-  EXPECT_NE(r.out.find("algo,policy,cache,target,triangles,vertices,misses,acmr,atvr,indices_per_triangle,vertices_sent,bandwidth\n"),
-            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("algo,policy,cache,target,triangles,vertices,misses,acmr,atvr,indices_per_triangle,vertices_"
+                       "sent,bandwidth\n"),
+            std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("scanline,fifo,16,16,512,289,544,"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("grid,fifo,20,20,512,289,289,"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("grid,fifo,16,16,512,289,306,"), std::string::npos) << r.out;
@@ -44,7 +46,8 @@ TEST(VcacheCli, EvictionAccountingPrintsCastanosPublishedCounts) {
   EXPECT_NE(r.out.find("# accounting: evictions (NVIDIA Mesh Tools)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("grid,fifo,12,12,512,289,307,"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("grid,fifo,16,16,512,289,306,"), std::string::npos) << r.out;
-  const Result on16 = run("vcache grid:16x16 --algo grid --target 8 --cache 16 --accounting evictions --format csv --no-time");
+  const Result on16 =
+      run("vcache grid:16x16 --algo grid --target 8 --cache 16 --accounting evictions --format csv --no-time");
   EXPECT_NE(on16.out.find("grid,fifo,16,8,512,289,325,"), std::string::npos) << on16.out;
   EXPECT_EQ(run("vcache grid:4x4 --algo grid --policy lru --accounting evictions").status, 1);
   EXPECT_EQ(run("vcache grid:4x4 --algo grid --accounting hits").status, 1);
@@ -70,8 +73,8 @@ TEST(VcacheCli, BadInputIsAnErrorWithExitCode1) {
 
 TEST(ReorderCli, WritesTheFacesInTheNewOrderAndReadsBack) {
   const std::filesystem::path out = std::filesystem::temp_directory_path() / "rastrace_reorder_cli_test.off";
-  const Result r = run("reorder " + rastrace::testing::data_file("meshes/fandisk.off") + " --algo tipsy --cache 16 -o " +
-                       out.string());
+  const Result r = run("reorder " + rastrace::testing::data_file("meshes/fandisk.off") +
+                       " --algo tipsy --cache 16 -o " + out.string());
   ASSERT_EQ(r.status, 0) << r.out;
   EXPECT_NE(r.out.find("12946 faces in tipsy order, ACMR 0.652"), std::string::npos) << r.out;
   // Read back: the written file in file order has tipsy's ACMR.

@@ -59,7 +59,8 @@ TEST(VertexCacheOrders, TipsyWithinTwoPercentOfMeshoptimizerFifo) {
     const Ordering ours = reorder_tipsy(mesh, params_for(16));
     std::vector<std::uint32_t> peer(mesh.indices.size());
     meshopt_optimizeVertexCacheFifo(peer.data(), mesh.indices.data(), mesh.indices.size(), mesh.vertex_count(), 16);
-    const double ratio = double(fifo_misses(ours.indices, ours.type, 16)) / double(fifo_misses(peer, PrimitiveType::TriangleList, 16));
+    const double ratio =
+        double(fifo_misses(ours.indices, ours.type, 16)) / double(fifo_misses(peer, PrimitiveType::TriangleList, 16));
     EXPECT_LE(ratio, 1.02) << name;
   }
 }
@@ -70,7 +71,8 @@ TEST(VertexCacheOrders, ForsythWithinThreePercentOfMeshoptimizer) {
     const Ordering ours = reorder_forsyth(mesh, params_for(16));
     std::vector<std::uint32_t> peer(mesh.indices.size());
     meshopt_optimizeVertexCache(peer.data(), mesh.indices.data(), mesh.indices.size(), mesh.vertex_count());
-    const double ratio = double(fifo_misses(ours.indices, ours.type, 16)) / double(fifo_misses(peer, PrimitiveType::TriangleList, 16));
+    const double ratio =
+        double(fifo_misses(ours.indices, ours.type, 16)) / double(fifo_misses(peer, PrimitiveType::TriangleList, 16));
     EXPECT_LE(ratio, 1.03) << name;
   }
 }
@@ -98,7 +100,8 @@ TEST(VertexCacheOrders, BestOfOursBeatsBestOfMeshoptimizer) {
       std::vector<std::uint32_t> peer(mesh.indices.size());
       meshopt_optimizeVertexCache(peer.data(), mesh.indices.data(), mesh.indices.size(), mesh.vertex_count());
       std::uint64_t theirs = fifo_misses(peer, PrimitiveType::TriangleList, cache);
-      meshopt_optimizeVertexCacheFifo(peer.data(), mesh.indices.data(), mesh.indices.size(), mesh.vertex_count(), cache);
+      meshopt_optimizeVertexCacheFifo(peer.data(), mesh.indices.data(), mesh.indices.size(), mesh.vertex_count(),
+                                      cache);
       theirs = std::min(theirs, fifo_misses(peer, PrimitiveType::TriangleList, cache));
       std::uint64_t ours = UINT64_MAX;
       std::string best;

@@ -179,8 +179,9 @@ TEST(ObjLoader, UsemtlGivesPerFaceMaterialsAndMapKdResolvesBesideTheMtl) {
   std::filesystem::create_directories(dir.path() / "materials" / "images");
   dir.write("materials/images/wood.png", "not read by the mesh loader");
   dir.write("materials/lib.mtl", "newmtl red\nKd 1 0 0\nnewmtl wood\nKd 1 1 1\nmap_Kd -s 1 1 1 images\\wood.png\n");
-  const Mesh mesh = load_mesh(dir.write("m.obj", "mtllib materials/lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
-                                                 "f 1 2 3\nusemtl wood\nf 2 4 3\nusemtl red\nf 1 2 4\n"));
+  const Mesh mesh = load_mesh(dir.write("m.obj",
+                                        "mtllib materials/lib.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+                                        "f 1 2 3\nusemtl wood\nf 2 4 3\nusemtl red\nf 1 2 4\n"));
   ASSERT_EQ(mesh.materials.size(), 3u);  // red, wood, and the default for the first face
   EXPECT_EQ(mesh.materials[2].name, "default");
   const std::vector<std::uint32_t> expected = {2, 1, 0};

@@ -1,8 +1,8 @@
 // Procedural meshes and projected UVs.
 #include <cmath>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "scenes/mesh_io.h"
 #include "scenes/mesh_stats.h"
@@ -15,7 +15,8 @@ namespace {
 double signed_volume(const Mesh& mesh) {
   double volume = 0.0;
   for (std::size_t i = 0; i < mesh.indices.size(); i += 3) {
-    const glm::dvec3 a(mesh.positions[mesh.indices[i]]), b(mesh.positions[mesh.indices[i + 1]]), c(mesh.positions[mesh.indices[i + 2]]);
+    const glm::dvec3 a(mesh.positions[mesh.indices[i]]), b(mesh.positions[mesh.indices[i + 1]]),
+        c(mesh.positions[mesh.indices[i + 2]]);
     volume += glm::dot(a, glm::cross(b, c)) / 6.0;
   }
   return volume;

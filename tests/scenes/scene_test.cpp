@@ -3,10 +3,10 @@
 #include <filesystem>
 #include <map>
 
-#include <glm/geometric.hpp>
-#include <glm/gtc/matrix_transform.hpp>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
 #include "scenes/scene_io.h"
@@ -31,7 +31,9 @@ std::string error_of(const std::string& spec) {
 
 TEST(JsonScene, ExampleSceneLoadsWithTransformsTexturesAndCamera) {
   // tests/scenes/scene_test.cpp -> the source tree's docs/.
-  const std::string path = (std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "docs" / "example_scene.json").string();
+  const std::string path =
+      (std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "docs" / "example_scene.json")
+          .string();
   const Scene scene = load_scene(path);
   ASSERT_EQ(scene.objects.size(), 3u);
   EXPECT_EQ(scene.width, 640);
@@ -60,18 +62,22 @@ TEST(JsonScene, SyntaxErrorsNameTheLineAndColumn) {
 TEST(JsonScene, WrongShapesNameTheJsonPath) {
   TempDir dir;
   const auto scene = [&](const std::string& body) { return error_of(dir.write("s.json", body)); };
-  EXPECT_THAT(scene(R"({"objects": [{"mesh": {"procedural": "grid"}}], "camera": {"eye": [0,0,1], "target": [0,0,0], "fov_y": "wide"}})"),
-              HasSubstr("s.json: camera.fov_y: expected a number, found string"));
+  EXPECT_THAT(
+      scene(
+          R"({"objects": [{"mesh": {"procedural": "grid"}}], "camera": {"eye": [0,0,1], "target": [0,0,0], "fov_y": "wide"}})"),
+      HasSubstr("s.json: camera.fov_y: expected a number, found string"));
   EXPECT_THAT(scene(R"({"objects": []})"), HasSubstr("objects: expected a non-empty array"));
   EXPECT_THAT(scene(R"([1, 2])"), HasSubstr("scene: expected an object, found array"));
   EXPECT_THAT(scene(R"({"objects": [{"mesh": {"procedural": "grid"}, "trasnform": {}}]})"),
               HasSubstr("objects[0].trasnform: expected no such key"));
   EXPECT_THAT(scene(R"({"objects": [{"mesh": {"procedural": "torus"}}]})"), HasSubstr("objects[0].mesh.procedural"));
-  EXPECT_THAT(scene(R"({"objects": [{"mesh": "nowhere/missing.off"}]})"), HasSubstr("objects[0].mesh: expected an existing file"));
+  EXPECT_THAT(scene(R"({"objects": [{"mesh": "nowhere/missing.off"}]})"),
+              HasSubstr("objects[0].mesh: expected an existing file"));
   EXPECT_THAT(scene(R"({"objects": [{"mesh": {"procedural": "icosphere"}, "material": {"texture": "gone.png"}}]})"),
               HasSubstr("objects[0].material.texture: expected an existing file"));
-  EXPECT_THAT(scene(R"({"objects": [{"mesh": "meshes/fandisk.off", "material": {"texture": {"procedural": "checker"}}}]})"),
-              HasSubstr("has none: add \"uv_projection\""));
+  EXPECT_THAT(
+      scene(R"({"objects": [{"mesh": "meshes/fandisk.off", "material": {"texture": {"procedural": "checker"}}}]})"),
+      HasSubstr("has none: add \"uv_projection\""));
   EXPECT_THAT(scene(R"({"objects": [{"mesh": {"procedural": "grid"}}], "viewport": {"width": 0, "height": 10}})"),
               HasSubstr("viewport.width: expected an integer from 1 to 16384, found 0"));
   EXPECT_THAT(scene(R"({"objects": [{"mesh": {"procedural": "grid"}}], "background": [2, 0, 0]})"),
@@ -81,7 +87,8 @@ TEST(JsonScene, WrongShapesNameTheJsonPath) {
 TEST(JsonScene, RelativePathsResolveBesideTheSceneThenInTheDataFolder) {
   TempDir dir;
   std::filesystem::copy_file(testing::data_file("meshes/triceratops.off"), dir.file("local.off"));
-  const Scene scene = load_scene(dir.write("s.json", R"({"objects": [{"mesh": "local.off"}, {"mesh": "meshes/fandisk.off"}]})"));
+  const Scene scene =
+      load_scene(dir.write("s.json", R"({"objects": [{"mesh": "local.off"}, {"mesh": "meshes/fandisk.off"}]})"));
   EXPECT_EQ(scene.objects[0].mesh.face_count(), 5660u);
   EXPECT_EQ(scene.objects[1].mesh.face_count(), 12946u);
 }
@@ -125,7 +132,8 @@ TEST(BuiltinScene, GridIsCheckeredAndSeenFromAboveAtAGrazingAngle) {
   const glm::mat4& m = grid.transform;
   for (std::size_t i = 0; i < grid.mesh.indices.size(); i += 3) {
     const glm::vec3 a(m * glm::vec4(grid.mesh.positions[grid.mesh.indices[i]], 1)),
-        b(m * glm::vec4(grid.mesh.positions[grid.mesh.indices[i + 1]], 1)), c(m * glm::vec4(grid.mesh.positions[grid.mesh.indices[i + 2]], 1));
+        b(m * glm::vec4(grid.mesh.positions[grid.mesh.indices[i + 1]], 1)),
+        c(m * glm::vec4(grid.mesh.positions[grid.mesh.indices[i + 2]], 1));
     ASSERT_GT(glm::cross(b - a, c - a).y, 0.0f);
     ASSERT_EQ(a.y, 0.0f);
   }

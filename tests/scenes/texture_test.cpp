@@ -62,7 +62,8 @@ TEST(MipChain, NonPowerOfTwoHalvesWithFloorAndAreaWeightsOddTexels) {
   base.height = 3;
   base.rgba.assign(5 * 3 * 4, 0);
   for (int y = 0; y < 3; ++y)
-    for (int x = 0; x < 5; ++x) base.rgba[static_cast<std::size_t>((y * 5 + x) * 4)] = static_cast<std::uint8_t>(x * 50);
+    for (int x = 0; x < 5; ++x)
+      base.rgba[static_cast<std::size_t>((y * 5 + x) * 4)] = static_cast<std::uint8_t>(x * 50);
   const auto levels = build_mip_chain(base);
   ASSERT_EQ(levels.size(), 3u);  // 5x3 -> 2x1 -> 1x1
   EXPECT_EQ(levels[1].width, 2);
@@ -101,7 +102,8 @@ TEST(ImageLoading, JpegPngAndTgaBecomeRgbaWithRowZeroAtTheTop) {
 TEST(ImageLoading, WrittenPngReadsBackTopRowFirst) {
   testing::TempDir dir;
   // A 2x2 PGM-free check: write a tiny binary PPM (OpenImageIO reads it) with a red top row.
-  const std::string ppm = std::string("P6\n2 2\n255\n") + std::string("\xff\x00\x00\xff\x00\x00\x00\x00\xff\x00\x00\xff", 12);
+  const std::string ppm =
+      std::string("P6\n2 2\n255\n") + std::string("\xff\x00\x00\xff\x00\x00\x00\x00\xff\x00\x00\xff", 12);
   const Image image = load_image(dir.write("top.ppm", ppm));
   EXPECT_EQ(rgba(image, 1, 0), (std::array<int, 4>{255, 0, 0, 255}));
   EXPECT_EQ(rgba(image, 0, 1), (std::array<int, 4>{0, 0, 255, 255}));

@@ -31,7 +31,7 @@ inline SyntheticFrame make_synthetic_frame(std::uint32_t width, std::uint32_t he
   // Screen (px, py) -> texture (u, v) in texels at level 0: a plane receding towards the top.
   const auto uv = [&](double px, double py, double& u, double& v) {
     const double sx = (px + 0.5) / width - 0.5;
-    const double sy = (py + 0.5) / height;  // 0 at the top (far), 1 at the bottom (near)
+    const double sy = (py + 0.5) / height;          // 0 at the top (far), 1 at the bottom (near)
     const double depth = 1.0 / (0.15 + 0.85 * sy);  // farther rows are smaller on screen
     const double x = sx * depth * 2.0, y = depth * 1.5;
     u = (c * x - s * y) * texture_size * 0.6 + texture_size * 4.0;
@@ -56,7 +56,8 @@ inline SyntheticFrame make_synthetic_frame(std::uint32_t width, std::uint32_t he
           uv(qx + dx, qy + dy, u, v);
           u = u / std::ldexp(1.0, level) - 0.5;
           v = v / std::ldexp(1.0, level) - 0.5;
-          const std::int64_t x0 = static_cast<std::int64_t>(std::floor(u)), y0 = static_cast<std::int64_t>(std::floor(v));
+          const std::int64_t x0 = static_cast<std::int64_t>(std::floor(u)),
+                             y0 = static_cast<std::int64_t>(std::floor(v));
           for (std::int64_t ty = 0; ty < 2; ++ty)
             for (std::int64_t tx = 0; tx < 2; ++tx) {
               // GL_REPEAT wrapping.

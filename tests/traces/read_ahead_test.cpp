@@ -45,7 +45,8 @@ void write_mixed_trace(const std::string& path) {
     writer.end_draw();
     writer.texel_accesses(std::span(frame.texels).subspan(draw * 2048, 2048));
     addresses.clear();
-    for (std::uint64_t i = 0; i < 300; ++i) addresses.push_back({(i * 0x9E3779B97F4A7C15ull) >> draw, static_cast<std::uint8_t>(i % 3)});
+    for (std::uint64_t i = 0; i < 300; ++i)
+      addresses.push_back({(i * 0x9E3779B97F4A7C15ull) >> draw, static_cast<std::uint8_t>(i % 3)});
     writer.address_accesses(addresses);
   }
   writer.finish();
@@ -160,7 +161,8 @@ TEST_F(ReadAhead, InOrderOutOfOrderAndInterruptedRunsGiveTheSameChunks) {
   for (std::size_t o = 0; o < orders.size(); ++o) {
     TraceReader reader(*path_);
     reader.set_read_ahead(true);
-    for (const std::size_t i : orders[o]) ASSERT_TRUE(copy_of(reader.read_chunk(i)) == want[i]) << "order " << o << ", chunk " << i;
+    for (const std::size_t i : orders[o])
+      ASSERT_TRUE(copy_of(reader.read_chunk(i)) == want[i]) << "order " << o << ", chunk " << i;
   }
   // Reading only texel chunks in order (the other kinds skipped) is in order for the read-ahead.
   TraceReader reader(*path_);
@@ -198,7 +200,8 @@ TEST_F(ReadAhead, StreamingReadersGiveTheSameRecordsWithAndWithoutReadAhead) {
     for (const ChunkCopy& c : *reference_) {
       if (c.kind == RecordKind::Texel)
         for (std::size_t i = 0; i < c.values.size(); i += 7)
-          want_sum += c.values[i + 2] * 3 + c.values[i + 3] * 5 + c.values[i + 1] * 7 + c.values[i + 4] + c.values[i + 6];
+          want_sum +=
+              c.values[i + 2] * 3 + c.values[i + 3] * 5 + c.values[i + 1] * 7 + c.values[i + 4] + c.values[i + 6];
       if (c.kind == RecordKind::Vertex)
         for (const std::uint64_t v : c.values) want_vertex_sum += v;
     }
@@ -226,7 +229,8 @@ void damage_chunk(const std::string& from, const std::string& to, std::size_t ch
   const std::size_t payload = static_cast<std::size_t>(end - offset - kChunkHeaderBytes);
   for (std::size_t k = payload / 3; k < payload / 3 + 8; ++k) bytes[offset + kChunkHeaderBytes + k] ^= 0x5A;
   if (fix_crc) {
-    const std::uint32_t crc = crc32c(bytes.data() + offset + kChunkHeaderBytes, payload, crc32c(bytes.data() + offset, 28));
+    const std::uint32_t crc =
+        crc32c(bytes.data() + offset + kChunkHeaderBytes, payload, crc32c(bytes.data() + offset, 28));
     std::memcpy(bytes.data() + offset + 28, &crc, 4);
   }
   put_bytes(to, bytes);
@@ -242,7 +246,8 @@ TEST_F(ReadAhead, FileCutShortAfterOpeningIsAReadErrorAtTheFirstMissingChunk) {
     std::filesystem::resize_file(cut, reader.chunks()[last_whole + 1].offset);  // chunks 0-10 left
     for (std::size_t i = 0; i <= last_whole; ++i) ASSERT_TRUE(copy_of(reader.read_chunk(i)) == (*reference_)[i]) << i;
     const std::string error = error_of(reader, last_whole + 1);
-    EXPECT_THAT(error, HasSubstr("byte " + std::to_string(reader.chunks()[last_whole + 1].offset) + ": chunk 11: read failed"))
+    EXPECT_THAT(error,
+                HasSubstr("byte " + std::to_string(reader.chunks()[last_whole + 1].offset) + ": chunk 11: read failed"))
         << (ahead ? "read-ahead" : "plain");
     std::filesystem::remove(cut);
   }
@@ -272,7 +277,8 @@ TEST_F(ReadAhead, DamagedChunkInTheMiddleIsReportedAtThatChunkAfterTheEarlierOne
     EXPECT_EQ(error_of(reader, bad), want);
     // The same error again when asked again, and the chunks after it still read.
     EXPECT_EQ(error_of(reader, bad), want);
-    for (std::size_t i = bad + 1; i < reader.chunks().size(); ++i) ASSERT_TRUE(copy_of(reader.read_chunk(i)) == (*reference_)[i]) << i;
+    for (std::size_t i = bad + 1; i < reader.chunks().size(); ++i)
+      ASSERT_TRUE(copy_of(reader.read_chunk(i)) == (*reference_)[i]) << i;
 
     // replay_trace: the sink has every record of the chunks before the damaged one.
     struct Counter final : EventSink {
@@ -301,7 +307,8 @@ TEST_F(ReadAhead, DamagedChunkInTheMiddleIsReportedAtThatChunkAfterTheEarlierOne
 TEST_F(ReadAhead, DestroyingAReaderAnywhereStopsItsThreadCleanly) {
   // Destroyed with the read-ahead thread busy, waiting for a free slot, or never started; after
   // an error; after read-ahead was switched off in the middle.
-  for (const std::size_t stop : {std::size_t{0}, std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{40}, std::size_t{274}}) {
+  for (const std::size_t stop :
+       {std::size_t{0}, std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{40}, std::size_t{274}}) {
     for (const int pause_ms : {0, 5}) {
       TraceReader reader(*path_);
       reader.set_read_ahead(true);
@@ -309,9 +316,7 @@ TEST_F(ReadAhead, DestroyingAReaderAnywhereStopsItsThreadCleanly) {
       if (pause_ms) std::this_thread::sleep_for(std::chrono::milliseconds(pause_ms));
     }
   }
-  {
-    TraceReader reader(*path_);
-  }
+  { TraceReader reader(*path_); }
   const std::string damaged = temp_path("destroy_damaged.rtrace");
   damage_chunk(*path_, damaged, 5, false);
   {

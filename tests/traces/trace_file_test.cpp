@@ -21,7 +21,8 @@ namespace {
 using ::testing::HasSubstr;
 
 std::string temp_path(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("rastrace_traces_" + std::to_string(::getpid()) + "_" + name)).string();
+  return (std::filesystem::temp_directory_path() / ("rastrace_traces_" + std::to_string(::getpid()) + "_" + name))
+      .string();
 }
 
 TraceMetadata sample_metadata() {
@@ -85,7 +86,9 @@ struct RecordingSink final : EventSink {
   void begin_draw(const DrawInfo& d) override { memory.begin_draw(d); }
   void vertex_fetches(std::span<const VertexFetch> f) override { memory.vertex_fetches(f); }
   void texel_accesses(std::span<const TexelAccess> t) override { memory.texel_accesses(t); }
-  void address_accesses(std::span<const AddressAccess> a) override { addresses.insert(addresses.end(), a.begin(), a.end()); }
+  void address_accesses(std::span<const AddressAccess> a) override {
+    addresses.insert(addresses.end(), a.begin(), a.end());
+  }
   void end_draw() override { ++ends; }
   void finish() override { finished = true; }
 };
@@ -131,7 +134,8 @@ TEST(ChunkCodec, ColumnsRoundTripSmallStepsLargeJumpsAndExtremes) {
   EXPECT_LT(raw.size(), 5000u * 3);  // 1 byte per delta + 8 per escape, not the 4 of fixed width
   DrawInfo draw;
   std::vector<VertexFetch> back;
-  ASSERT_EQ(decode_vertex_records({reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size()}, 5000, draw, back), "");
+  ASSERT_EQ(decode_vertex_records({reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size()}, 5000, draw, back),
+            "");
   EXPECT_EQ(draw.draw, 7u);
   EXPECT_EQ(draw.type, PrimitiveType::TriangleStrip);
   ASSERT_EQ(back.size(), fetches.size());
@@ -142,7 +146,8 @@ TEST(ChunkCodec, ColumnsRoundTripSmallStepsLargeJumpsAndExtremes) {
   std::vector<AddressAccess> addresses = {{~std::uint64_t{0}, 2}, {0, 0}, {1ull << 63, 1}};
   encode_address_records(addresses, raw);
   std::vector<AddressAccess> addresses_back;
-  ASSERT_EQ(decode_address_records({reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size()}, 3, addresses_back), "");
+  ASSERT_EQ(decode_address_records({reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size()}, 3, addresses_back),
+            "");
   EXPECT_EQ(addresses_back[0].address, ~std::uint64_t{0});
   EXPECT_EQ(addresses_back[2].address, 1ull << 63);
   EXPECT_EQ(addresses_back[0].label, 2);
@@ -157,11 +162,14 @@ TEST(ChunkCodec, DecodersReportGarbageAsErrorsWithoutReadingPastTheEnd) {
   for (int trial = 0; trial < 300; ++trial) {
     std::string bad = raw;
     state = state * 6364136223846793005ull + 1442695040888963407ull;
-    if (trial % 3 == 0) bad.resize(static_cast<std::size_t>(state >> 33) % raw.size());
-    else bad[static_cast<std::size_t>(state >> 33) % bad.size()] ^= static_cast<char>(1 + (state >> 20) % 255);
+    if (trial % 3 == 0)
+      bad.resize(static_cast<std::size_t>(state >> 33) % raw.size());
+    else
+      bad[static_cast<std::size_t>(state >> 33) % bad.size()] ^= static_cast<char>(1 + (state >> 20) % 255);
     std::vector<TexelAccess> out;
     errors += !decode_texel_records({reinterpret_cast<const std::uint8_t*>(bad.data()), bad.size()},
-                                    static_cast<std::uint32_t>(events.texels.size()), out).empty();
+                                    static_cast<std::uint32_t>(events.texels.size()), out)
+                   .empty();
   }
   EXPECT_GE(errors, 100);  // every truncation at least; flipped delta bytes may decode to other values
 }
@@ -230,9 +238,7 @@ std::string bytes_of(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
-void put_bytes(const std::string& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary) << bytes;
-}
+void put_bytes(const std::string& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
 std::string open_error(const std::string& path) {
   try {
     TraceReader reader(path);
