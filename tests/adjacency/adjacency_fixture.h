@@ -1,4 +1,5 @@
-// Shared, computed-once constructions of the test meshes (the cover search is the slow part).
+// The adjacency suites' computed-once constructions of the test meshes (the cover search is the
+// slow part). The meshes themselves come from the shared test kit.
 #pragma once
 
 #include <map>
@@ -7,8 +8,7 @@
 
 #include "reorder/adjacency_bound.h"
 #include "reorder/adjacency_build.h"
-#include "scenes/mesh_io.h"
-#include "tests/support/test_data.h"
+#include "tests/support/test_meshes.h"
 
 namespace rastrace::testing {
 
@@ -23,7 +23,7 @@ inline const BuiltMesh& built_mesh(const std::string& name) {
   auto& slot = cache[name];
   if (!slot) {
     slot = std::make_unique<BuiltMesh>();
-    slot->mesh = load_mesh(data_file("meshes/" + name));
+    slot->mesh = cached_mesh(name);
     slot->build = build_adjacency_primitives(slot->mesh, CoverParams{});
   }
   return *slot;

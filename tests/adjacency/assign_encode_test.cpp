@@ -103,7 +103,7 @@ INSTANTIATE_TEST_SUITE_P(Sander2008, AssignmentOnPaperMeshes,
 
 TEST(AdjacencyEncoding, BoundaryEdgesAreProcessedOnceAndMarkedByTheirStartVertex) {
   for (const bool grid : {true, false}) {
-    const Mesh mesh = grid ? make_grid(12, 9) : load_mesh(testing::data_file("meshes/elephant-with-holes.off"));
+    const Mesh mesh = grid ? make_grid(12, 9) : testing::cached_mesh("elephant-with-holes.off");
     const AdjacencyBuild b = build_adjacency_primitives(mesh);
     EXPECT_TRUE(is_perfect_restricted_assignment(b.dual, b.cover.in_cover, b.assignment));
     expect_every_face_and_edge_once(mesh, b.primitives);

@@ -2,25 +2,27 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "support/run_rastrace.h"
+#include "support/temp_dir.h"
 #include "support/test_data.h"
 
 namespace rastrace {
 namespace {
 
 using testing::CommandRun;
-CommandRun run(const std::string& arguments) { return testing::run_rastrace(arguments); }
+CommandRun run(const std::vector<std::string>& arguments) { return testing::run_rastrace(arguments); }
 
 TEST(AdjacencyCommand, JsonRowsCarryCoverBoundCacheMissesAndGain) {
   const std::string mesh = testing::data_file("meshes/triceratops.off");
-  const std::filesystem::path output = std::filesystem::temp_directory_path() / "rastrace_adjacency_test.txt";
-  std::filesystem::remove(output);
-  const CommandRun r = run("adjacency " + mesh + " --format json --no-time -o " + output.string());
-  ASSERT_EQ(r.status, 0) << r.out;
+  const testing::TempDir dir;
+  const std::string output = dir.file("careful.txt");
+  const CommandRun r = run({"adjacency", mesh, "--format", "json", "--no-time", "-o", output});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json rows = nlohmann::json::parse(r.out);
   ASSERT_EQ(rows.size(), 5u);
   const char* orders[] = {"careful", "fast", "baseline", "baseline-mesh", "naive"};
@@ -54,16 +56,15 @@ TEST(AdjacencyCommand, JsonRowsCarryCoverBoundCacheMissesAndGain) {
   EXPECT_EQ(line.rfind("# GL_TRIANGLES_ADJACENCY", 0), 0u) << line;
   while (std::getline(in, line)) ++lines;
   EXPECT_EQ(lines, 3125u);
-  std::filesystem::remove(output);
 }
 
 TEST(AdjacencyCommand, EdgeStageCountsEveryFaceAndEdgeOnceAndWritesTheLines) {
   const std::string mesh = testing::data_file("meshes/triceratops.off");
-  const std::filesystem::path image = std::filesystem::temp_directory_path() / "rastrace_adjacency_lines.png";
-  std::filesystem::remove(image);
-  const CommandRun r = run("adjacency " + mesh + " --order careful --edges --size 256 --lines " + image.string() +
-                           " --format json --no-time");
-  ASSERT_EQ(r.status, 0) << r.out;
+  const testing::TempDir dir;
+  const std::string image = dir.file("lines.png");
+  const CommandRun r = run({"adjacency", mesh, "--order", "careful", "--edges", "--size", "256", "--lines", image,
+                            "--format", "json", "--no-time"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json rows = nlohmann::json::parse(r.out);
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0].at("faces_processed"), 5660);
@@ -71,26 +72,25 @@ TEST(AdjacencyCommand, EdgeStageCountsEveryFaceAndEdgeOnceAndWritesTheLines) {
   EXPECT_EQ(rows[0].at("shader_invocations"), rows[0].at("misses"));  // the pipeline's cache = the simulation
   EXPECT_GT(rows[0].at("silhouette_edges").get<int>(), 100);
   EXPECT_GT(std::filesystem::file_size(image), 100u);
-  std::filesystem::remove(image);
 }
 
 TEST(AdjacencyCommand, BadInputIsAnErrorWithExitCodeOne) {
   const std::string mesh = testing::data_file("meshes/triceratops.off");
-  CommandRun r = run("adjacency " + mesh + " --order bogus");
-  EXPECT_EQ(r.status, 1);
-  EXPECT_NE(r.out.find("expected careful, fast, baseline, baseline-mesh or all"), std::string::npos) << r.out;
-  r = run("adjacency " + mesh + " --cache 0");
-  EXPECT_EQ(r.status, 1);
-  r = run("adjacency /nonexistent/mesh.off");
-  EXPECT_EQ(r.status, 1);
-  EXPECT_NE(r.out.find("/nonexistent/mesh.off"), std::string::npos) << r.out;
-  r = run("adjacency " + mesh + " --format xml");
-  EXPECT_EQ(r.status, 1);
+  CommandRun r = run({"adjacency", mesh, "--order", "bogus"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("expected careful, fast, baseline, baseline-mesh or all"), std::string::npos) << r.err;
+  r = run({"adjacency", mesh, "--cache", "0"});
+  EXPECT_EQ(r.exit_code, 1);
+  r = run({"adjacency", "/nonexistent/mesh.off"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("/nonexistent/mesh.off"), std::string::npos) << r.err;
+  r = run({"adjacency", mesh, "--format", "xml"});
+  EXPECT_EQ(r.exit_code, 1);
 }
 
 TEST(AdjacencyCommand, MarkdownTableShowsEveryOrderingOnAGrid) {
-  const CommandRun r = run("adjacency grid:8x8 --order fast --iterations 100 --no-time");
-  ASSERT_EQ(r.status, 0) << r.out;
+  const CommandRun r = run({"adjacency", "grid:8x8", "--order", "fast", "--iterations", "100", "--no-time"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("| fast |"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("| careful |"), std::string::npos);
   EXPECT_NE(r.out.find("- cache: 24"), std::string::npos) << r.out;

@@ -84,7 +84,7 @@ TEST(AdjacencyCover, OctahedronReachesTheBoundOfFourFaces) {
 
 TEST(AdjacencyCover, PruningIllegalPathsKeepsTheMatchingOptimum) {
   for (const char* file : {"eight.off", "blob-closed.off", "dragknob.off"}) {
-    const Mesh mesh = load_mesh(testing::data_file(std::string("meshes/") + file));
+    const Mesh& mesh = testing::cached_mesh(file);
     const AdjacencyDual dual = build_adjacency_dual(mesh);
     const CoverBound pruned = adjacency_cover_lower_bound(mesh, dual, true);
     const CoverBound full = adjacency_cover_lower_bound(mesh, dual, false);
@@ -95,7 +95,7 @@ TEST(AdjacencyCover, PruningIllegalPathsKeepsTheMatchingOptimum) {
 }
 
 TEST(AdjacencyCover, BoundaryFacesAreForcedAndTheBoundUsesTheBoundarySink) {
-  const Mesh mesh = load_mesh(testing::data_file("meshes/elephant-with-holes.off"));
+  const Mesh& mesh = testing::cached_mesh("elephant-with-holes.off");
   const AdjacencyDual dual = build_adjacency_dual(mesh);
   EXPECT_EQ(dual.boundary_slot_count, 1353u);
   CoverParams params;
@@ -122,7 +122,7 @@ TEST(AdjacencyCover, GridCoverIsHalfTheInteriorPlusTheBoundaryRing) {
 }
 
 TEST(AdjacencyCover, SameSeedSameCoverOtherSeedStillMinimal) {
-  const Mesh mesh = load_mesh(testing::data_file("meshes/triceratops.off"));
+  const Mesh& mesh = testing::cached_mesh("triceratops.off");
   const AdjacencyDual dual = build_adjacency_dual(mesh);
   CoverParams params;
   params.max_iterations = 20000;
@@ -136,7 +136,7 @@ TEST(AdjacencyCover, SameSeedSameCoverOtherSeedStillMinimal) {
 }
 
 TEST(AdjacencyCover, ZeroIterationsGivesTheMinimalGreedyCover) {
-  const Mesh mesh = load_mesh(testing::data_file("meshes/triceratops.off"));
+  const Mesh& mesh = testing::cached_mesh("triceratops.off");
   const AdjacencyDual dual = build_adjacency_dual(mesh);
   CoverParams params;
   params.max_iterations = 0;

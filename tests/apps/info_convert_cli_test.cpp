@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "tests/apps/cli_run.h"
-#include "tests/scenes/temp_dir.h"
+#include "tests/support/run_rastrace.h"
+#include "tests/support/temp_dir.h"
 #include "tests/support/test_data.h"
 
 namespace rastrace {
@@ -14,11 +14,11 @@ namespace {
 
 using testing::data_file;
 using ::testing::HasSubstr;
-using testing::run_rastrace_cli;
+using testing::run_rastrace;
 using testing::TempDir;
 
 TEST(InfoCommand, FandiskJsonReports6475VerticesAnd12946Faces) {
-  const auto result = run_rastrace_cli({"info", data_file("meshes/fandisk.off"), "--json"});
+  const auto result = run_rastrace({"info", data_file("meshes/fandisk.off"), "--json"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const auto json = nlohmann::json::parse(result.out);
   EXPECT_EQ(json["vertices"], 6475);
@@ -33,7 +33,7 @@ TEST(InfoCommand, FandiskJsonReports6475VerticesAnd12946Faces) {
 }
 
 TEST(InfoCommand, BuiltinBunnyPrintsATableWithItsCounts) {
-  const auto result = run_rastrace_cli({"info", "builtin:bunny"});
+  const auto result = run_rastrace({"info", "builtin:bunny"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_THAT(result.out, HasSubstr("| 37706 | 75408 | 1 | 1 |"));
   EXPECT_THAT(result.out, HasSubstr("boundary edges"));
@@ -43,7 +43,7 @@ TEST(InfoCommand, MultiObjectSceneGivesTotalsAndPerObjectFigures) {
   const std::string example =
       (std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "docs" / "example_scene.json")
           .string();
-  const auto result = run_rastrace_cli({"info", example, "--json"});
+  const auto result = run_rastrace({"info", example, "--json"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const auto json = nlohmann::json::parse(result.out);
   ASSERT_EQ(json["objects"].size(), 3u);
@@ -53,12 +53,12 @@ TEST(InfoCommand, MultiObjectSceneGivesTotalsAndPerObjectFigures) {
   EXPECT_EQ(json["textures"], 3);
   EXPECT_EQ(json["boundary_edges"], 32);
   EXPECT_EQ(json["viewport"]["width"], 640);
-  const auto text = run_rastrace_cli({"info", example});
+  const auto text = run_rastrace({"info", example});
   EXPECT_THAT(text.out, HasSubstr("| total | 38429 | 76816 |"));
 }
 
 TEST(InfoCommand, SpiderObjReportsFiveMaterialsAndTextures) {
-  const auto result = run_rastrace_cli({"info", data_file("assimp/OBJ/spider.obj"), "--json"});
+  const auto result = run_rastrace({"info", data_file("assimp/OBJ/spider.obj"), "--json"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const auto json = nlohmann::json::parse(result.out);
   EXPECT_EQ(json["materials"], 5);
@@ -69,11 +69,11 @@ TEST(InfoCommand, SpiderObjReportsFiveMaterialsAndTextures) {
 TEST(ConvertCommand, OffToBinaryPlyToObjToOffGivesTheSameBytes) {
   TempDir dir;
   const std::string fandisk = data_file("meshes/fandisk.off");
-  ASSERT_EQ(run_rastrace_cli({"convert", fandisk, dir.file("direct.off")}).exit_code, 0);
-  ASSERT_EQ(run_rastrace_cli({"convert", fandisk, dir.file("a.ply")}).exit_code, 0);
+  ASSERT_EQ(run_rastrace({"convert", fandisk, dir.file("direct.off")}).exit_code, 0);
+  ASSERT_EQ(run_rastrace({"convert", fandisk, dir.file("a.ply")}).exit_code, 0);
   EXPECT_THAT(testing::slurp(dir.file("a.ply")), HasSubstr("format binary_little_endian 1.0"));
-  ASSERT_EQ(run_rastrace_cli({"convert", dir.file("a.ply"), dir.file("b.obj")}).exit_code, 0);
-  const auto last = run_rastrace_cli({"convert", dir.file("b.obj"), dir.file("c.off")});
+  ASSERT_EQ(run_rastrace({"convert", dir.file("a.ply"), dir.file("b.obj")}).exit_code, 0);
+  const auto last = run_rastrace({"convert", dir.file("b.obj"), dir.file("c.off")});
   ASSERT_EQ(last.exit_code, 0) << last.err;
   EXPECT_THAT(last.out, HasSubstr("6475 vertices, 12946 faces"));
   EXPECT_EQ(testing::slurp(dir.file("c.off")), testing::slurp(dir.file("direct.off")));
@@ -81,17 +81,17 @@ TEST(ConvertCommand, OffToBinaryPlyToObjToOffGivesTheSameBytes) {
 
 TEST(ConvertCommand, AsciiFlagWritesAsciiPly) {
   TempDir dir;
-  const auto result = run_rastrace_cli({"convert", data_file("meshes/triceratops.off"), dir.file("t.ply"), "--ascii"});
+  const auto result = run_rastrace({"convert", data_file("meshes/triceratops.off"), dir.file("t.ply"), "--ascii"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_THAT(testing::slurp(dir.file("t.ply")), HasSubstr("format ascii 1.0\n"));
 }
 
 TEST(ConvertCommand, UnwritableOutputFailsWithoutLeavingAPartialFile) {
   TempDir dir;
-  const auto bad_format = run_rastrace_cli({"convert", data_file("meshes/fandisk.off"), dir.file("out.stl")});
+  const auto bad_format = run_rastrace({"convert", data_file("meshes/fandisk.off"), dir.file("out.stl")});
   EXPECT_EQ(bad_format.exit_code, 1);
   EXPECT_THAT(bad_format.err, HasSubstr("out.stl: cannot write format '.stl': expected .off, .ply or .obj"));
-  const auto no_folder = run_rastrace_cli({"convert", data_file("meshes/fandisk.off"), dir.file("missing/out.off")});
+  const auto no_folder = run_rastrace({"convert", data_file("meshes/fandisk.off"), dir.file("missing/out.off")});
   EXPECT_EQ(no_folder.exit_code, 1);
   EXPECT_THAT(no_folder.err, HasSubstr("cannot open for writing"));
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
@@ -99,7 +99,7 @@ TEST(ConvertCommand, UnwritableOutputFailsWithoutLeavingAPartialFile) {
 
 TEST(CommandLine, HelpShowsAnExampleForInfoAndConvert) {
   for (const char* command : {"info", "convert"}) {
-    const auto result = run_rastrace_cli({command, "--help"});
+    const auto result = run_rastrace({command, "--help"});
     EXPECT_EQ(result.exit_code, 0) << command;
     EXPECT_THAT(result.out, HasSubstr(std::string("rastrace ") + command + " ")) << command;
     EXPECT_THAT(result.out, HasSubstr("Example")) << command;
@@ -107,10 +107,10 @@ TEST(CommandLine, HelpShowsAnExampleForInfoAndConvert) {
 }
 
 TEST(CommandLine, UsageErrorsExitWithCode2) {
-  EXPECT_EQ(run_rastrace_cli({"info"}).exit_code, 2);
-  EXPECT_EQ(run_rastrace_cli({"info", "a.off", "--jsn"}).exit_code, 2);
-  EXPECT_EQ(run_rastrace_cli({"convert", "a.off"}).exit_code, 2);
-  const auto ascii = run_rastrace_cli({"convert", data_file("meshes/fandisk.off"), "x.off", "--ascii"});
+  EXPECT_EQ(run_rastrace({"info"}).exit_code, 2);
+  EXPECT_EQ(run_rastrace({"info", "a.off", "--jsn"}).exit_code, 2);
+  EXPECT_EQ(run_rastrace({"convert", "a.off"}).exit_code, 2);
+  const auto ascii = run_rastrace({"convert", data_file("meshes/fandisk.off"), "x.off", "--ascii"});
   EXPECT_EQ(ascii.exit_code, 2);
   EXPECT_THAT(ascii.err, HasSubstr("--ascii"));
   EXPECT_FALSE(std::filesystem::exists("x.off"));

@@ -9,15 +9,15 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "tests/apps/cli_run.h"
-#include "tests/scenes/temp_dir.h"
+#include "tests/support/run_rastrace.h"
+#include "tests/support/temp_dir.h"
 #include "tests/support/test_data.h"
 
 namespace rastrace {
 namespace {
 
 using ::testing::HasSubstr;
-using testing::run_rastrace_cli;
+using testing::run_rastrace;
 using testing::TempDir;
 
 // Binary PLY with 4 vertices (float xyz) and the given faces (uchar count, int indices).
@@ -214,7 +214,7 @@ TEST_P(MalformedInput, ExitsWithCode1AndSaysWhereAndWhat) {
   TempDir dir;
   if (m.setup) m.setup(dir);
   const std::string path = m.contents ? dir.write(m.file, m.contents()) : dir.file(m.file);
-  const auto result = run_rastrace_cli({"info", path});
+  const auto result = run_rastrace({"info", path});
   EXPECT_EQ(result.exit_code, 1) << result.err;
   EXPECT_TRUE(result.out.empty()) << result.out;
   // (libpng may print its own line first; rastrace's message follows.)
@@ -229,7 +229,7 @@ INSTANTIATE_TEST_SUITE_P(Files, MalformedInput, ::testing::Range<std::size_t>(0,
                          });
 
 TEST(MalformedInput, UnknownBuiltinSceneExitsWithCode1) {
-  const auto result = run_rastrace_cli({"info", "builtin:teapot"});
+  const auto result = run_rastrace({"info", "builtin:teapot"});
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_THAT(
       result.err,
@@ -241,7 +241,7 @@ TEST(MalformedInput, ConvertRefusesBadInputsAndWritesNothing) {
   for (const std::size_t i : {0u, 10u, 19u}) {  // truncated OFF, truncated binary PLY, OBJ index out of range
     const Malformed& m = cases()[i];
     const std::string path = dir.write(m.file, m.contents());
-    const auto result = run_rastrace_cli({"convert", path, dir.file("converted.off")});
+    const auto result = run_rastrace({"convert", path, dir.file("converted.off")});
     EXPECT_EQ(result.exit_code, 1) << m.name;
     EXPECT_THAT(result.err, HasSubstr(m.expected[0])) << m.name;
     EXPECT_FALSE(std::filesystem::exists(dir.file("converted.off"))) << m.name;

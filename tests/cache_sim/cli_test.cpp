@@ -1,11 +1,10 @@
 // `rastrace replay` and `rastrace sweep` end to end, through the built tool.
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <string>
+#include <vector>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -14,6 +13,7 @@
 #include "cache_sim/live_bank_sink.h"
 #include "naive_cache.h"
 #include "support/run_rastrace.h"
+#include "support/temp_dir.h"
 #include "support/test_data.h"
 #include "tests/support/synthetic_frame.h"
 #include "traces/trace_reader.h"
@@ -25,26 +25,21 @@ namespace {
 using ::testing::HasSubstr;
 
 using ToolRun = testing::CommandRun;
-ToolRun run(const std::string& arguments) { return testing::run_rastrace(arguments); }
-
-std::string temp(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("rastrace_cli_" + std::to_string(::getpid()) + "_" + name))
-      .string();
-}
+ToolRun run(const std::vector<std::string>& arguments) { return testing::run_rastrace(arguments); }
 
 TEST(SweepCommand, DinSweepGivesTheNaiveReferenceMissesForEveryConfiguration) {
   std::mt19937_64 rng(2024);
   std::vector<std::uint64_t> addresses;
   for (int i = 0; i < 1200; ++i) addresses.push_back(rng() % 3 ? 0x10000 + rng() % 3000 : rng() % 0x40000);
-  const std::string din = temp("trace.din");
+  const testing::TempDir dir;
+  const std::string din = dir.file("trace.din");
   {
     std::ofstream out(din);
     for (const std::uint64_t a : addresses) out << (a % 3) << ' ' << std::hex << a << std::dec << '\n';
   }
-  const ToolRun r = run(
-      "sweep " + din + " --size 256B..2KiB --line 16B,64B --assoc 1,2,full --policy fifo,lru,random,opt --format json");
-  std::filesystem::remove(din);
-  ASSERT_EQ(r.status, 0) << r.out;
+  const ToolRun r = run({"sweep", din, "--size", "256B..2KiB", "--line", "16B,64B", "--assoc", "1,2,full", "--policy",
+                         "fifo,lru,random,opt", "--format", "json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json rows = nlohmann::json::parse(r.out);
   ASSERT_EQ(rows.size(), 4u * 2 * 3 * 4);
   for (const auto& row : rows) {
@@ -66,7 +61,8 @@ TEST(ReplayCommand, ReplayTableStatesItsParametersAndMatchesTheLiveBank) {
   meta.width = meta.height = 64;
   meta.filter = "bilinear";
   meta.textures = frame.textures;
-  const std::string path = temp("frame.rtrace");
+  const testing::TempDir dir;
+  const std::string path = dir.file("frame.rtrace");
   {
     TraceWriter writer(path, meta);
     writer.texel_accesses(frame.texels);
@@ -79,10 +75,9 @@ TEST(ReplayCommand, ReplayTableStatesItsParametersAndMatchesTheLiveBank) {
   live.texel_accesses(frame.texels);
   live.finish();
 
-  const ToolRun r = run("replay " + path +
-                        " --cache size=4KiB,line=64B,assoc=2,policy=lru,layout=block4 "
-                        "--cache size=4KiB,assoc=full,policy=opt,layout=morton --format csv");
-  ASSERT_EQ(r.status, 0) << r.out;
+  const ToolRun r = run({"replay", path, "--cache", "size=4KiB,line=64B,assoc=2,policy=lru,layout=block4", "--cache",
+                         "size=4KiB,assoc=full,policy=opt,layout=morton", "--format", "csv"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* parameter :
        {"# scene: synthetic", "# ordering: scanline", "# resolution: 64x64", "# filter: bilinear", "# texel_bytes: 4",
         "# level_alignment_bytes: 4096", "# source: texel"})
@@ -92,36 +87,35 @@ TEST(ReplayCommand, ReplayTableStatesItsParametersAndMatchesTheLiveBank) {
   EXPECT_THAT(r.out, HasSubstr("4096,64,0,opt,morton,16384," + std::to_string(live.texture_stats()[1].hits) + "," +
                                std::to_string(live.texture_stats()[1].misses) + ","));
 
-  const std::string plot = temp("plot.svg");
-  const ToolRun s = run("sweep " + path + " --size 1KiB..8KiB --policy lru,fifo --layout linear,morton --plot " + plot +
-                        " --format latex");
-  EXPECT_EQ(s.status, 0) << s.out;
+  const std::string plot = dir.file("plot.svg");
+  const ToolRun s = run({"sweep", path, "--size", "1KiB..8KiB", "--policy", "lru,fifo", "--layout", "linear,morton",
+                         "--plot", plot, "--format", "latex"});
+  EXPECT_EQ(s.exit_code, 0) << s.err;
   EXPECT_THAT(s.out, HasSubstr("\\toprule"));
   EXPECT_TRUE(std::filesystem::exists(plot));
   std::ifstream svg(plot);
   const std::string text((std::istreambuf_iterator<char>(svg)), {});
   EXPECT_THAT(text, HasSubstr("lru morton"));
   EXPECT_THAT(text, HasSubstr("fifo linear"));
-  std::filesystem::remove(plot);
-  std::filesystem::remove(path);
 }
 
 TEST(ReplayCommand, BadInputsAreReportedWithExitCodeOne) {
-  const std::string path = temp("bad.rtrace");
+  const testing::TempDir dir;
+  const std::string path = dir.file("bad.rtrace");
   {
     TraceWriter writer(path, {});
     writer.address_accesses({{{1, 0}, {2, 0}}});
     writer.finish();
   }
-  ToolRun r = run("replay " + path + " --cache size=3KiB,line=64B,assoc=32");
-  EXPECT_EQ(r.status, 1);
-  EXPECT_THAT(r.out, HasSubstr("48 lines do not divide into 32-way sets"));
-  r = run("replay " + path + " --cache size=4KiB,colour=red");
-  EXPECT_EQ(r.status, 1);
-  EXPECT_THAT(r.out, HasSubstr("unknown key 'colour'"));
-  r = run("sweep " + path + " --size 1KiB..3KiB");
-  EXPECT_EQ(r.status, 1);
-  EXPECT_THAT(r.out, HasSubstr("--size: '1KiB..3KiB': expected a range between two powers of two"));
+  ToolRun r = run({"replay", path, "--cache", "size=3KiB,line=64B,assoc=32"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("48 lines do not divide into 32-way sets"));
+  r = run({"replay", path, "--cache", "size=4KiB,colour=red"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("unknown key 'colour'"));
+  r = run({"sweep", path, "--size", "1KiB..3KiB"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("--size: '1KiB..3KiB': expected a range between two powers of two"));
   // Flip a payload byte: the replay names the chunk.
   std::string bytes;
   {
@@ -131,10 +125,9 @@ TEST(ReplayCommand, BadInputsAreReportedWithExitCodeOne) {
   const std::uint64_t offset = TraceReader(path).chunks()[0].offset;
   bytes[offset + kChunkHeaderBytes + 2] ^= 1;
   std::ofstream(path, std::ios::binary) << bytes;
-  r = run("replay " + path + " --cache size=4KiB");
-  EXPECT_EQ(r.status, 1);
-  EXPECT_THAT(r.out, HasSubstr("byte " + std::to_string(offset) + ": chunk 0: checksum mismatch"));
-  std::filesystem::remove(path);
+  r = run({"replay", path, "--cache", "size=4KiB"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("byte " + std::to_string(offset) + ": chunk 0: checksum mismatch"));
 }
 
 }  // namespace

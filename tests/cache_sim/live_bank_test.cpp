@@ -1,12 +1,9 @@
-#include <unistd.h>
-
-#include <filesystem>
-
 #include <gtest/gtest.h>
 
 #include "cache_sim/live_bank_sink.h"
 #include "core/error.h"
 #include "scenes/procedural.h"
+#include "tests/support/temp_dir.h"
 #include "traces/trace_reader.h"
 #include "traces/trace_writer.h"
 
@@ -102,8 +99,8 @@ TEST(LiveBankSink, ReplayingTheWrittenTraceGivesTheLiveStatisticsExactly) {
          {ReplacementPolicy::Lru, ReplacementPolicy::Fifo, ReplacementPolicy::Random, ReplacementPolicy::Opt})
       config.texture.push_back({CacheConfig{1024, 64, 2, policy, 7}, parse_layout(layout)});
   config.vertex_buffer.push_back({CacheConfig{512, 32, 0, ReplacementPolicy::Lru, 1}, 32});
-  const std::string path =
-      (std::filesystem::temp_directory_path() / ("rastrace_live_" + std::to_string(::getpid()) + ".rtrace")).string();
+  const testing::TempDir dir;
+  const std::string path = dir.file("live.rtrace");
   LiveBankSink live(config, textures);
   {
     TraceMetadata meta;
@@ -144,7 +141,6 @@ TEST(LiveBankSink, ReplayingTheWrittenTraceGivesTheLiveStatisticsExactly) {
   for (std::size_t l = 0; l < 3; ++l)
     for (std::size_t p = 0; p < 3; ++p)
       EXPECT_LE(live.texture_stats()[l * 4 + 3].misses, live.texture_stats()[l * 4 + p].misses);
-  std::filesystem::remove(path);
 }
 
 }  // namespace

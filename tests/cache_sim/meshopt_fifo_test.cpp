@@ -7,8 +7,8 @@
 
 #include "cache_sim/live_bank_sink.h"
 #include "cache_sim/vertex_cache.h"
-#include "scenes/mesh_io.h"
 #include "tests/support/test_data.h"
+#include "tests/support/test_meshes.h"
 
 namespace rastrace {
 namespace {
@@ -16,7 +16,7 @@ namespace {
 TEST(MeshoptFifo, MissesEqualMeshoptAnalyzeVertexCacheOnCgalMeshesInEveryOrder) {
   int compared = 0;
   for (const char* name : {"fandisk.off", "triceratops.off", "elephant.off", "bunny00.off", "cow.off"}) {
-    const Mesh mesh = load_mesh(testing::data_file(std::string("meshes/") + name));
+    const Mesh& mesh = testing::cached_mesh(name);
     ASSERT_FALSE(mesh.indices.empty()) << name;
     const std::size_t n = mesh.indices.size(), vertices = mesh.positions.size();
     std::vector<std::uint32_t> forsyth(n), tipsy(n);
@@ -38,7 +38,7 @@ TEST(MeshoptFifo, MissesEqualMeshoptAnalyzeVertexCacheOnCgalMeshesInEveryOrder) 
 TEST(MeshoptFifo, ReorderedFandiskHasTheAcmrMeshoptimizerReports) {
   // The ACMR that meshopt_analyzeVertexCache reports, reproduced through the live bank (the
   // renderer's path) to three decimals.
-  const Mesh mesh = load_mesh(testing::data_file("meshes/fandisk.off"));
+  const Mesh& mesh = testing::cached_mesh("fandisk.off");
   std::vector<std::uint32_t> tipsy(mesh.indices.size());
   meshopt_optimizeVertexCacheFifo(tipsy.data(), mesh.indices.data(), tipsy.size(), mesh.positions.size(), 16);
   const meshopt_VertexCacheStatistics theirs =

@@ -47,8 +47,8 @@ TEST(Reproduce, RowsWithoutOurMeshAreKeptEmpty) {
 }
 
 TEST(Reproduce, JsonRowsCarryPublishedOursAndDifference) {
-  const testing::CommandRun run = testing::run_rastrace("reproduce --paper castano --format json", false);
-  ASSERT_EQ(run.status, 0) << run.out;
+  const testing::CommandRun run = testing::run_rastrace({"reproduce", "--paper", "castano", "--format", "json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
   const nlohmann::json rows = nlohmann::json::parse(run.out);
   ASSERT_EQ(rows.size(), 26u);  // 8 methods x 3 caches, the wrong-size row, the W + 2 row
   bool seen = false;
@@ -67,7 +67,7 @@ TEST(Reproduce, UnknownPaperIsAnError) {
   ReproduceOptions options;
   options.papers = "castano,nosuch";
   EXPECT_THROW(reproduction_table(options), InputError);
-  EXPECT_EQ(testing::run_rastrace("reproduce --paper nosuch", false).status, 1);
+  EXPECT_EQ(testing::run_rastrace({"reproduce", "--paper", "nosuch"}).exit_code, 1);
 }
 
 }  // namespace

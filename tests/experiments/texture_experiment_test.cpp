@@ -4,30 +4,23 @@
 #include <filesystem>
 #include <map>
 #include <string>
-
-#include <unistd.h>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "apps/texture_experiment.h"
 #include "support/run_rastrace.h"
+#include "support/temp_dir.h"
 #include "support/test_data.h"
 
 namespace rastrace {
 namespace {
 
-std::string temporary_dir(const std::string& name) {
-  const auto dir =
-      std::filesystem::temp_directory_path() / ("rastrace-test-" + name + "-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir.string();
-}
-
-std::string run(const std::string& arguments) {
-  const testing::CommandRun result = testing::run_rastrace(arguments, /*with_stderr=*/false);
-  EXPECT_EQ(result.status, 0) << arguments;
+// The command's stdout; its exit code must be 0.
+std::string run(const std::vector<std::string>& arguments) {
+  const testing::CommandRun result = testing::run_rastrace(arguments);
+  EXPECT_EQ(result.exit_code, 0) << ::testing::PrintToString(arguments) << "\n" << result.err;
   return result.out;
 }
 
@@ -50,8 +43,8 @@ TextureExperiment bunny_strip_against_texgroup(const std::string& trace_dir) {
 
 TEST(TextureExperiment, TexgroupHasFewerTextureMissesThanStripOnTheFourColourBunny) {
   (void)testing::data_file("meshes/bunny00.off");
-  const std::string dir = temporary_dir("fig9");
-  const std::vector<TextureRun> runs = run_texture_experiment(bunny_strip_against_texgroup(dir));
+  const testing::TempDir dir;
+  const std::vector<TextureRun> runs = run_texture_experiment(bunny_strip_against_texgroup(dir.path().string()));
   ASSERT_EQ(runs.size(), 2u);
   const TextureRun& strip = runs[0];
   const TextureRun& grouped = runs[1];
@@ -72,46 +65,44 @@ TEST(TextureExperiment, TexgroupHasFewerTextureMissesThanStripOnTheFourColourBun
   // Both orders draw every face once: the same triangles reach the vertex cache.
   EXPECT_EQ(strip.vertex.triangles, 75408u);
   EXPECT_EQ(grouped.vertex.triangles, 75408u);
-  std::filesystem::remove_all(dir);
 }
 
 TEST(TextureExperiment, LiveRenderAgreesWithTheSweptTraceToTheMiss) {
   // `render` simulates its texture cache live; `texsweep` records the trace and replays it.
   // The spider's strips run across its five materials: every triangle keeps its face's texture.
-  const std::string dir = temporary_dir("live");
+  const testing::TempDir dir;
   for (const auto& [scene, order] : {std::pair{"builtin:bunny", "strip"},
                                      {"builtin:bunny", "texgroup"},
                                      {"builtin:spider", "strip"},
                                      {"builtin:spider", "texgroup"}}) {
-    const std::string common = std::string(scene) + " --order " + order + " --cull back ";
-    const auto live = nlohmann::json::parse(
-        run("render " + common + "--tcache 4KiB,64B,full,lru --layout linear -o " + dir + "/frame.png --json"));
-    const auto swept =
-        nlohmann::json::parse(run("texsweep " + common +
-                                  "--raster scanline --size 4KiB --line 64B --assoc full --policy lru --layout linear "
-                                  "--format json"));
+    const auto live =
+        nlohmann::json::parse(run({"render", scene, "--order", order, "--cull", "back", "--tcache", "4KiB,64B,full,lru",
+                                   "--layout", "linear", "-o", dir.file("frame.png"), "--json"}));
+    const auto swept = nlohmann::json::parse(
+        run({"texsweep", scene, "--order", order,  "--cull",   "back", "--raster", "scanline", "--size",   "4KiB",
+             "--line",   "64B", "--assoc", "full", "--policy", "lru",  "--layout", "linear",   "--format", "json"}));
     ASSERT_EQ(swept.size(), 1u);
     EXPECT_EQ(live[0]["texture_misses"], swept[0]["misses"]) << scene << " " << order;
     EXPECT_EQ(live[0]["texel_accesses"], swept[0]["accesses"]) << scene << " " << order;
     EXPECT_NEAR(live[0]["acmr"].get<double>(), swept[0]["vertex_acmr"].get<double>(), 1e-12) << scene << " " << order;
   }
-  std::filesystem::remove_all(dir);
 }
 
 TEST(TextureExperiment, RerunningTheSameCommandGivesByteIdenticalTables) {
-  const std::string command =
-      "texsweep builtin:grid --order tipsy,texgroup --base tipsy --raster scanline,tiled8 --size 1KiB..4KiB "
-      "--policy fifo,lru,opt --layout linear,morton --format ";
   for (const char* format : {"md", "json"}) {
-    const std::string first = run(command + format);
+    const std::vector<std::string> command = {"texsweep", "builtin:grid",  "--order",  "tipsy,texgroup",
+                                              "--base",   "tipsy",         "--raster", "scanline,tiled8",
+                                              "--size",   "1KiB..4KiB",    "--policy", "fifo,lru,opt",
+                                              "--layout", "linear,morton", "--format", format};
+    const std::string first = run(command);
     EXPECT_FALSE(first.empty());
-    EXPECT_EQ(first, run(command + format)) << format;
+    EXPECT_EQ(first, run(command)) << format;
   }
 }
 
 TEST(TextureExperiment, ASceneWithoutTexturesIsAClearError) {
-  const std::string dir = temporary_dir("untextured");
-  TextureExperiment experiment = bunny_strip_against_texgroup(dir);
+  const testing::TempDir dir;
+  TextureExperiment experiment = bunny_strip_against_texgroup(dir.path().string());
   experiment.render.scene = testing::data_file("meshes/fandisk.off");
   try {
     run_texture_experiment(experiment);
@@ -119,7 +110,6 @@ TEST(TextureExperiment, ASceneWithoutTexturesIsAClearError) {
   } catch (const std::exception& e) {
     EXPECT_NE(std::string(e.what()).find("has no texture"), std::string::npos) << e.what();
   }
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

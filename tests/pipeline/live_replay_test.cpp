@@ -1,17 +1,14 @@
 // Rendering with a live cache bank and replaying the trace written in the same pass give the
 // same statistics, to the miss (DESIGN.md: the event stream is the seam).
-#include <unistd.h>
-#include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "cache_sim/live_bank_sink.h"
 #include "pipeline/render_scene.h"
-#include "scenes/mesh_io.h"
-#include "scenes/procedural.h"
-#include "scenes/texture_io.h"
-#include "tests/support/test_data.h"
+#include "tests/support/tee_sink.h"
+#include "tests/support/temp_dir.h"
+#include "tests/support/textured_bunny.h"
 #include "traces/memory_sink.h"
 #include "traces/replay_file.h"
 #include "traces/trace_writer.h"
@@ -19,36 +16,8 @@
 namespace rastrace {
 namespace {
 
-class Tee final : public EventSink {
- public:
-  Tee(EventSink& a, EventSink& b) : a_(a), b_(b) {}
-  void begin_draw(const DrawInfo& d) override { a_.begin_draw(d), b_.begin_draw(d); }
-  void vertex_fetches(std::span<const VertexFetch> f) override { a_.vertex_fetches(f), b_.vertex_fetches(f); }
-  void texel_accesses(std::span<const TexelAccess> t) override { a_.texel_accesses(t), b_.texel_accesses(t); }
-  void end_draw() override { a_.end_draw(), b_.end_draw(); }
-  void finish() override { a_.finish(), b_.finish(); }
-
- private:
-  EventSink& a_;
-  EventSink& b_;
-};
-
 Scene textured_bunny() {
-  Scene scene;
-  scene.name = "bunny00 checker";
-  scene.width = 200;
-  scene.height = 160;
-  Texture checker;
-  checker.levels = build_mip_chain(make_checker(128, 8));
-  scene.textures.push_back(checker);
-  SceneObject bunny;
-  bunny.mesh = load_mesh(testing::data_file("meshes/bunny00.off"));
-  project_uvs_spherical(bunny.mesh);
-  Material material;
-  material.texture = 0;
-  bunny.mesh.materials = {material};
-  bunny.mesh.face_material.clear();
-  scene.objects.push_back(bunny);
+  Scene scene = testing::textured_bunny(200, 160, 128, 8);
   scene.camera.eye = glm::vec3(-0.02f, 0.15f, 0.25f);
   scene.camera.target = glm::vec3(-0.02f, 0.1f, 0.0f);
   scene.camera.near_plane = 0.01f;
@@ -82,8 +51,8 @@ TEST(LiveReplay, LiveCacheBankEqualsReplayOfTheWrittenTraceToTheMiss) {
       sizes.push_back({static_cast<std::uint32_t>(image.width), static_cast<std::uint32_t>(image.height)});
     levels.push_back(sizes);
   }
-  const std::string path =
-      (std::filesystem::temp_directory_path() / ("rastrace-live-" + std::to_string(::getpid()) + ".rtrace")).string();
+  const testing::TempDir dir;
+  const std::string path = dir.file("live.rtrace");
   TraceMetadata metadata;
   metadata.scene = scene.name;
   metadata.width = static_cast<std::uint32_t>(scene.width);
@@ -95,14 +64,13 @@ TEST(LiveReplay, LiveCacheBankEqualsReplayOfTheWrittenTraceToTheMiss) {
   TraceWriterOptions small_chunks;
   small_chunks.chunk_records = 4096;  // many chunks: chunk boundaries must not change anything
   TraceWriter writer(path, metadata, small_chunks);
-  Tee tee(live, writer);
+  testing::TeeSink tee(live, writer);
   RenderOptions options;
   options.pipeline.raster.traversal = Traversal::Tiled8;
   const RenderResult result = render_scene(scene, options, &tee);
 
   LiveBankSink replayed(bank_config(), levels);
   replay_file(path, replayed);
-  std::filesystem::remove(path);
 
   ASSERT_GT(result.raster.texel_reads, 100000u);
   ASSERT_EQ(live.texture_stats().size(), 6u);

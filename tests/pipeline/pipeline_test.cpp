@@ -8,9 +8,9 @@
 #include "cache_sim/vertex_cache.h"
 #include "core/error.h"
 #include "pipeline/pipeline.h"
-#include "scenes/mesh_io.h"
 #include "scenes/procedural.h"
 #include "tests/support/test_data.h"
+#include "tests/support/test_meshes.h"
 #include "traces/memory_sink.h"
 
 namespace rastrace {
@@ -91,7 +91,7 @@ TEST(Pipeline, StripWithRestartAndDegeneratesFetchesEveryIndexAndKeepsOneWinding
 }
 
 TEST(Pipeline, ShaderInvocationsAreTheVertexCacheMissesOnBunny00) {
-  const Mesh bunny = load_mesh(testing::data_file("meshes/bunny00.off"));
+  const Mesh& bunny = testing::cached_mesh("bunny00.off");
   for (const VertexCachePolicy policy : {VertexCachePolicy::Fifo, VertexCachePolicy::Lru}) {
     for (const unsigned entries : {8u, 16u, 32u}) {
       PipelineOptions options;

@@ -1,32 +1,29 @@
 // `rastrace render` and `rastrace compare` as a user runs them.
-#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "support/run_rastrace.h"
+#include "support/temp_dir.h"
 #include "support/test_data.h"
 
 namespace rastrace {
 namespace {
 
 using testing::CommandRun;
-CommandRun run(const std::string& arguments) { return testing::run_rastrace(arguments); }
-
-std::string temp(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("rastrace-cli-" + std::to_string(::getpid()) + "-" + name))
-      .string();
-}
+CommandRun run(const std::vector<std::string>& arguments) { return testing::run_rastrace(arguments); }
 
 TEST(RenderCommand, PrintsTheFrameCostsAsJsonAndWritesTheImageAndTrace) {
-  const std::string image = temp("grid.png"), trace = temp("grid.rtrace"), depth = temp("grid.exr");
+  const testing::TempDir dir;
+  const std::string image = dir.file("grid.png"), trace = dir.file("grid.rtrace"), depth = dir.file("grid.exr");
   const CommandRun r =
-      run("render builtin:grid --size 160x120 -o " + image + " --trace " + trace + " --depth " + depth +
-          " --raster tiled8 --vcache fifo:16 --tcache 8KiB,64B,2way,lru --layout morton --json");
-  ASSERT_EQ(r.status, 0) << r.out;
+      run({"render", "builtin:grid", "--size", "160x120", "-o", image, "--trace", trace, "--depth", depth, "--raster",
+           "tiled8", "--vcache", "fifo:16", "--tcache", "8KiB,64B,2way,lru", "--layout", "morton", "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json rows = nlohmann::json::parse(r.out);
   ASSERT_EQ(rows.size(), 1u);
   const nlohmann::json& row = rows[0];
@@ -42,28 +39,28 @@ TEST(RenderCommand, PrintsTheFrameCostsAsJsonAndWritesTheImageAndTrace) {
   EXPECT_TRUE(std::filesystem::exists(image));
   EXPECT_GT(std::filesystem::file_size(trace), 1000u);
   EXPECT_GT(std::filesystem::file_size(depth), 1000u);
-  std::filesystem::remove(depth);
-  std::filesystem::remove(image);
-  std::filesystem::remove(trace);
 }
 
 TEST(RenderCommand, BadOptionsAreErrorsAndLeaveNoFile) {
-  const std::string image = temp("bad.png");
-  CommandRun r = run("render builtin:grid -o " + image + " --tcache 16KiB,64B,4,lru");
-  EXPECT_EQ(r.status, 1);
-  EXPECT_NE(r.out.find("associativity '4'"), std::string::npos) << r.out;
-  r = run("render builtin:grid -o " + image + " --raster zigzag");
-  EXPECT_EQ(r.status, 1);
-  EXPECT_NE(r.out.find("expected scanline or tiled8"), std::string::npos) << r.out;
-  r = run("render builtin:grid -o " + image + " --size 0x10");
-  EXPECT_EQ(r.status, 1);
+  const testing::TempDir dir;
+  const std::string image = dir.file("bad.png");
+  CommandRun r = run({"render", "builtin:grid", "-o", image, "--tcache", "16KiB,64B,4,lru"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("associativity '4'"), std::string::npos) << r.err;
+  r = run({"render", "builtin:grid", "-o", image, "--raster", "zigzag"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("expected scanline or tiled8"), std::string::npos) << r.err;
+  r = run({"render", "builtin:grid", "-o", image, "--size", "0x10"});
+  EXPECT_EQ(r.exit_code, 1);
   EXPECT_FALSE(std::filesystem::exists(image));
 }
 
 TEST(CompareCommand, GridAgainstSoftpipeMeetsTheAcceptanceThresholds) {
-  const std::string diff = temp("diff.png");
-  const CommandRun r = run("compare builtin:grid --size 160x120 --driver softpipe -o " + diff + " --json");
-  ASSERT_EQ(r.status, 0) << r.out;
+  const testing::TempDir dir;
+  const std::string diff = dir.file("diff.png");
+  const CommandRun r =
+      run({"compare", "builtin:grid", "--size", "160x120", "--driver", "softpipe", "-o", diff, "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json row = nlohmann::json::parse(r.out).at(0);
   EXPECT_EQ(row["driver"], "softpipe");
   EXPECT_EQ(row["pixels"], 160 * 120);
@@ -73,8 +70,7 @@ TEST(CompareCommand, GridAgainstSoftpipeMeetsTheAcceptanceThresholds) {
   EXPECT_GE(row["psnr"].get<double>(), 40.0);
   EXPECT_EQ(row["coverage_differs_off_edge"], 0);
   EXPECT_TRUE(std::filesystem::exists(diff));
-  std::filesystem::remove(diff);
-  EXPECT_EQ(run("compare builtin:grid --driver swrast").status, 1);
+  EXPECT_EQ(run({"compare", "builtin:grid", "--driver", "swrast"}).exit_code, 1);
 }
 
 }  // namespace

@@ -5,11 +5,10 @@
 
 #include <glm/ext/matrix_transform.hpp>
 
-#include "scenes/mesh_io.h"
 #include "scenes/procedural.h"
 #include "scenes/scene_io.h"
 #include "scenes/texture_io.h"
-#include "tests/support/test_data.h"
+#include "tests/support/textured_bunny.h"
 
 namespace rastrace::testing {
 
@@ -143,22 +142,12 @@ Scene grazing_plane_scene() {
 }
 
 Scene bunny_checker_scene(int width, int height) {
-  Scene scene;
-  scene.name = "bunny00 checker";
-  scene.width = width;
-  scene.height = height;
-  scene.textures.push_back(checker_texture(256, 16));
-  SceneObject bunny;
-  bunny.mesh = load_mesh(data_file("meshes/bunny00.off"));
-  project_uvs_spherical(bunny.mesh);
-  bunny.mesh.materials = {textured(0)};
-  bunny.mesh.face_material.clear();
+  Scene scene = textured_bunny(width, height, 256, 16);
   glm::vec3 lo(1e30f), hi(-1e30f);
-  for (const glm::vec3& p : bunny.mesh.positions) {
+  for (const glm::vec3& p : scene.objects[0].mesh.positions) {
     lo = glm::min(lo, p);
     hi = glm::max(hi, p);
   }
-  scene.objects.push_back(bunny);
   scene.camera = frame_bounds(lo, hi, static_cast<float>(width) / static_cast<float>(height));
   scene.camera.fov_y_degrees = 45.0f;
   return scene;

@@ -6,9 +6,9 @@
 
 #include "core/error.h"
 #include "reorder/strip.h"
-#include "scenes/mesh_io.h"
 #include "scenes/procedural.h"
 #include "tests/support/test_data.h"
+#include "tests/support/test_meshes.h"
 
 namespace rastrace {
 namespace {
@@ -19,7 +19,7 @@ VertexStreamStats simulate(const Ordering& o, VertexCachePolicy policy, unsigned
 
 // Hoppe's Table 2 gives 0.61 on his crease-split fandisk; his MeshReorder gives 0.628 on CGAL's.
 TEST(Greedy, FandiskFifo16MatchesHoppe) {
-  const Mesh mesh = load_mesh(testing::data_file("meshes/fandisk.off"));
+  const Mesh& mesh = testing::cached_mesh("fandisk.off");
   const MeshTopology topology = build_mesh_topology(mesh);
   GreedyStats stats;
   ReorderParams params;
@@ -41,7 +41,7 @@ TEST(Greedy, FandiskFifo16MatchesHoppe) {
 }
 
 TEST(Greedy, LruOrderIsTunedForLru) {
-  const Mesh mesh = load_mesh(testing::data_file("meshes/fandisk.off"));
+  const Mesh& mesh = testing::cached_mesh("fandisk.off");
   ReorderParams lru;
   lru.policy = VertexCachePolicy::Lru;
   const Ordering for_lru = reorder_greedy(mesh, lru);
@@ -53,7 +53,7 @@ TEST(Greedy, LruOrderIsTunedForLru) {
 }
 
 TEST(Greedy, LargerCacheGivesFewerMisses) {
-  const Mesh mesh = load_mesh(testing::data_file("meshes/triceratops.off"));
+  const Mesh& mesh = testing::cached_mesh("triceratops.off");
   double previous = 10.0;
   for (const unsigned k : {8u, 12u, 16u, 24u, 32u}) {
     ReorderParams params;

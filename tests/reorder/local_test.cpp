@@ -6,9 +6,9 @@
 
 #include "reorder/greedy.h"
 #include "reorder/strip.h"
-#include "scenes/mesh_io.h"
 #include "scenes/procedural.h"
 #include "tests/support/test_data.h"
+#include "tests/support/test_meshes.h"
 
 namespace rastrace {
 namespace {
@@ -19,7 +19,7 @@ double fifo_acmr(const Ordering& o, unsigned cache) {
 
 // Hoppe's Table 2: 0.61 -> 0.60 on his fandisk. 8,000 positions are well under one pass.
 TEST(Local, FandiskFifo16ReachesHoppesOptimizedRate) {
-  const Mesh mesh = load_mesh(testing::data_file("meshes/fandisk.off"));
+  const Mesh& mesh = testing::cached_mesh("fandisk.off");
   const MeshTopology topology = build_mesh_topology(mesh);
   ReorderParams params;
   params.iteration_budget = 8000;
@@ -77,7 +77,7 @@ TEST(Local, ConvergesOnASmallGridAndNeverGetsWorse) {
 }
 
 TEST(Local, LruKeepsTheGreedyOrder) {
-  const Mesh mesh = load_mesh(testing::data_file("meshes/triceratops.off"));
+  const Mesh& mesh = testing::cached_mesh("triceratops.off");
   ReorderParams params;
   params.policy = VertexCachePolicy::Lru;
   params.iteration_budget = 100;

@@ -3,27 +3,21 @@
 #include "reorder/strip.h"
 
 #include <algorithm>
-#include <map>
 
 #include <gtest/gtest.h>
 
 #include "reorder/greedy.h"
-#include "scenes/mesh_io.h"
 #include "scenes/procedural.h"
 #include "tests/support/ordering_checks.h"
 #include "tests/support/test_data.h"
+#include "tests/support/test_meshes.h"
 
 namespace rastrace {
 namespace {
 
 const Mesh& test_mesh(const std::string& name) {
-  static std::map<std::string, Mesh> meshes;
-  auto found = meshes.find(name);
-  if (found == meshes.end()) {
-    Mesh mesh = name == "grid" ? make_grid(16, 16) : load_mesh(testing::data_file("meshes/" + name + ".off"));
-    found = meshes.emplace(name, std::move(mesh)).first;
-  }
-  return found->second;
+  static const Mesh grid = make_grid(16, 16);
+  return name == "grid" ? grid : testing::cached_mesh(name + ".off");
 }
 
 TEST(StripStats, CountsStripsSwapsAndRestarts) {

@@ -2,20 +2,23 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "support/run_rastrace.h"
+#include "support/temp_dir.h"
 #include "support/test_data.h"
 
 namespace {
 
 using Result = rastrace::testing::CommandRun;
-Result run(const std::string& arguments) { return rastrace::testing::run_rastrace(arguments); }
+Result run(const std::vector<std::string>& arguments) { return rastrace::testing::run_rastrace(arguments); }
 
 TEST(VcacheCli, CastanoRowsAsCsv) {
-  const Result r = run("vcache grid:16x16 --algo scanline,grid --cache 12,16,20 --format csv --no-time");
-  ASSERT_EQ(r.status, 0) << r.out;
+  const Result r =
+      run({"vcache", "grid:16x16", "--algo", "scanline,grid", "--cache", "12,16,20", "--format", "csv", "--no-time"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("algo,policy,cache,target,triangles,vertices,misses,acmr,atvr,indices_per_triangle,vertices_"
                        "sent,bandwidth\n"),
             std::string::npos)
@@ -27,62 +30,65 @@ TEST(VcacheCli, CastanoRowsAsCsv) {
 
 TEST(VcacheCli, StripPrintsVerticesSentOnTriceratops) {
   // Yang et al., Table 1: 6,911 vertices sent by Evans et al.'s strips; ours send 6,820.
-  const Result r = run("vcache " + rastrace::testing::data_file("meshes/triceratops.off") +
-                       " --algo strip --cache 16 --format csv --no-time");
-  ASSERT_EQ(r.status, 0) << r.out;
+  const Result r = run({"vcache", rastrace::testing::data_file("meshes/triceratops.off"), "--algo", "strip", "--cache",
+                        "16", "--format", "csv", "--no-time"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("strip,fifo,16,16,5660,2832,"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find(",6820,"), std::string::npos) << r.out;
 }
 
 TEST(VcacheCli, TargetSetsTheCacheTheOrderIsMadeFor) {
-  const Result r = run("vcache grid:16x16 --algo grid --target 8 --cache 8,16 --format csv --no-time");
-  ASSERT_EQ(r.status, 0) << r.out;
+  const Result r = run(
+      {"vcache", "grid:16x16", "--algo", "grid", "--target", "8", "--cache", "8,16", "--format", "csv", "--no-time"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("grid,fifo,16,8,512,289,323,"), std::string::npos) << r.out;
 }
 
 TEST(VcacheCli, EvictionAccountingPrintsCastanosPublishedCounts) {
-  const Result r = run("vcache grid:16x16 --algo grid --cache 12,16,20 --accounting evictions --format csv --no-time");
-  ASSERT_EQ(r.status, 0) << r.out;
+  const Result r = run({"vcache", "grid:16x16", "--algo", "grid", "--cache", "12,16,20", "--accounting", "evictions",
+                        "--format", "csv", "--no-time"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("# accounting: evictions (NVIDIA Mesh Tools)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("grid,fifo,12,12,512,289,307,"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("grid,fifo,16,16,512,289,306,"), std::string::npos) << r.out;
-  const Result on16 =
-      run("vcache grid:16x16 --algo grid --target 8 --cache 16 --accounting evictions --format csv --no-time");
+  const Result on16 = run({"vcache", "grid:16x16", "--algo", "grid", "--target", "8", "--cache", "16", "--accounting",
+                           "evictions", "--format", "csv", "--no-time"});
   EXPECT_NE(on16.out.find("grid,fifo,16,8,512,289,325,"), std::string::npos) << on16.out;
-  EXPECT_EQ(run("vcache grid:4x4 --algo grid --policy lru --accounting evictions").status, 1);
-  EXPECT_EQ(run("vcache grid:4x4 --algo grid --accounting hits").status, 1);
+  EXPECT_EQ(run({"vcache", "grid:4x4", "--algo", "grid", "--policy", "lru", "--accounting", "evictions"}).exit_code, 1);
+  EXPECT_EQ(run({"vcache", "grid:4x4", "--algo", "grid", "--accounting", "hits"}).exit_code, 1);
 }
 
 TEST(VcacheCli, NoTimeOutputIsByteIdenticalBetweenRuns) {
-  const std::string args = "vcache grid:12x12 --algo all --cache 12,16 --policy fifo,lru --format json --no-time";
+  const std::vector<std::string> args = {"vcache",   "grid:12x12", "--algo",   "all",  "--cache",  "12,16",
+                                         "--policy", "fifo,lru",   "--format", "json", "--no-time"};
   const Result a = run(args), b = run(args);
-  ASSERT_EQ(a.status, 0) << a.out;
+  ASSERT_EQ(a.exit_code, 0) << a.err;
   EXPECT_EQ(a.out, b.out);
   EXPECT_NE(a.out.find("\"algo\": \"kcache\""), std::string::npos);
   EXPECT_NE(a.out.find("\"policy\": \"lru\""), std::string::npos);
 }
 
 TEST(VcacheCli, BadInputIsAnErrorWithExitCode1) {
-  EXPECT_EQ(run("vcache grid:16x --algo grid").status, 1);
-  EXPECT_EQ(run("vcache grid:4x4 --cache 0").status, 1);
-  EXPECT_EQ(run("vcache grid:4x4 --algo nosuch").status, 1);
-  const Result r = run("vcache " + rastrace::testing::data_file("meshes/triceratops.off") + " --algo grid");
-  EXPECT_EQ(r.status, 1);
-  EXPECT_NE(r.out.find("not a regular grid"), std::string::npos) << r.out;
+  EXPECT_EQ(run({"vcache", "grid:16x", "--algo", "grid"}).exit_code, 1);
+  EXPECT_EQ(run({"vcache", "grid:4x4", "--cache", "0"}).exit_code, 1);
+  EXPECT_EQ(run({"vcache", "grid:4x4", "--algo", "nosuch"}).exit_code, 1);
+  const Result r = run({"vcache", rastrace::testing::data_file("meshes/triceratops.off"), "--algo", "grid"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("not a regular grid"), std::string::npos) << r.err;
 }
 
 TEST(ReorderCli, WritesTheFacesInTheNewOrderAndReadsBack) {
-  const std::filesystem::path out = std::filesystem::temp_directory_path() / "rastrace_reorder_cli_test.off";
-  const Result r = run("reorder " + rastrace::testing::data_file("meshes/fandisk.off") +
-                       " --algo tipsy --cache 16 -o " + out.string());
-  ASSERT_EQ(r.status, 0) << r.out;
+  const rastrace::testing::TempDir dir;
+  const std::string out = dir.file("fandisk-tipsy.off");
+  const Result r = run(
+      {"reorder", rastrace::testing::data_file("meshes/fandisk.off"), "--algo", "tipsy", "--cache", "16", "-o", out});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("12946 faces in tipsy order, ACMR 0.652"), std::string::npos) << r.out;
   // Read back: the written file in file order has tipsy's ACMR.
-  const Result check = run("vcache " + out.string() + " --algo original --cache 16 --format csv --no-time");
+  const Result check = run({"vcache", out, "--algo", "original", "--cache", "16", "--format", "csv", "--no-time"});
   EXPECT_NE(check.out.find("original,fifo,16,16,12946,6475,"), std::string::npos) << check.out;
   EXPECT_NE(check.out.find(",0.652"), std::string::npos) << check.out;
-  std::filesystem::remove(out);
-  EXPECT_EQ(run("reorder grid:4x4 --algo tipsy -o /nonexistent-dir/x.off").status, 1);
+  EXPECT_EQ(run({"reorder", "grid:4x4", "--algo", "tipsy", "-o", "/nonexistent-dir/x.off"}).exit_code, 1);
 }
 
 }  // namespace

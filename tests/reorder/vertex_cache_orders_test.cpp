@@ -3,29 +3,23 @@
 // best of ours against the best of meshoptimizer's at FIFO 12, 16, 24 and 32.
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include <gtest/gtest.h>
 #include <meshoptimizer.h>
 
 #include "cache_sim/vertex_cache.h"
 #include "reorder/ordering.h"
-#include "scenes/mesh_io.h"
 #include "scenes/procedural.h"
 #include "tests/support/ordering_checks.h"
 #include "tests/support/test_data.h"
+#include "tests/support/test_meshes.h"
 
 namespace rastrace {
 namespace {
 
 const Mesh& test_mesh(const std::string& name) {
-  static std::map<std::string, Mesh> meshes;
-  auto found = meshes.find(name);
-  if (found == meshes.end()) {
-    Mesh mesh = name == "grid" ? make_grid(16, 16) : load_mesh(testing::data_file("meshes/" + name + ".off"));
-    found = meshes.emplace(name, std::move(mesh)).first;
-  }
-  return found->second;
+  static const Mesh grid = make_grid(16, 16);
+  return name == "grid" ? grid : testing::cached_mesh(name + ".off");
 }
 
 ReorderParams params_for(unsigned cache) {

@@ -8,7 +8,7 @@
 #include "core/error.h"
 #include "scenes/mesh_io.h"
 #include "scenes/mesh_stats.h"
-#include "tests/scenes/temp_dir.h"
+#include "tests/support/temp_dir.h"
 #include "tests/support/test_data.h"
 
 namespace rastrace {

@@ -4,10 +4,10 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
-#include "scenes/mesh_io.h"
 #include "scenes/mesh_stats.h"
 #include "scenes/procedural.h"
 #include "tests/support/test_data.h"
+#include "tests/support/test_meshes.h"
 
 namespace rastrace {
 namespace {
@@ -73,7 +73,7 @@ TEST(Grid, CastanoLayoutIsUnchanged) {
 }
 
 TEST(UvProjection, PlanarZMapsTheBoundingBoxToTheUnitSquareUpright) {
-  Mesh mesh = load_mesh(testing::data_file("meshes/triceratops.off"));
+  Mesh mesh = testing::cached_mesh("triceratops.off");
   project_uvs_planar(mesh, 2);
   ASSERT_EQ(mesh.uvs.size(), mesh.vertex_count());
   glm::vec2 lo(1.0f), hi(0.0f);
@@ -113,7 +113,7 @@ TEST(MeshStats, CountsBoundaryNonManifoldEdgesAndComponents) {
 }
 
 TEST(MeshStats, FandiskIsOneClosedManifoldComponent) {
-  const MeshStats stats = compute_mesh_stats(load_mesh(testing::data_file("meshes/fandisk.off")));
+  const MeshStats stats = compute_mesh_stats(testing::cached_mesh("fandisk.off"));
   EXPECT_EQ(stats.boundary_edges, 0u);
   EXPECT_EQ(stats.non_manifold_edges, 0u);
   EXPECT_EQ(stats.connected_components, 1u);

@@ -11,7 +11,7 @@
 #include "core/error.h"
 #include "scenes/scene_io.h"
 #include "scenes/texture_io.h"
-#include "tests/scenes/temp_dir.h"
+#include "tests/support/temp_dir.h"
 #include "tests/support/test_data.h"
 
 namespace rastrace {

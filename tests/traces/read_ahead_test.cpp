@@ -1,8 +1,6 @@
 // TraceReader's read-ahead (a second thread decoding the next chunks): the records must be the
 // same in every reading order, errors must surface at the chunk they belong to, and a reader
 // destroyed anywhere must stop its thread cleanly (these tests also run under ASan and TSan).
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstring>
@@ -15,6 +13,7 @@
 
 #include "core/error.h"
 #include "tests/support/synthetic_frame.h"
+#include "tests/support/temp_dir.h"
 #include "traces/crc32c.h"
 #include "traces/trace_reader.h"
 #include "traces/trace_writer.h"
@@ -23,11 +22,6 @@ namespace rastrace {
 namespace {
 
 using ::testing::HasSubstr;
-
-std::string temp_path(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("rastrace_readahead_" + std::to_string(::getpid()) + "_" + name))
-      .string();
-}
 
 // Vertex, texel and address chunks interleaved, 128 records per chunk: 275 chunks.
 void write_mixed_trace(const std::string& path) {
@@ -107,18 +101,21 @@ std::string error_of(TraceReader& reader, std::size_t chunk) {
 class ReadAhead : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    path_ = new std::string(temp_path("mixed.rtrace"));
+    dir_ = new testing::TempDir;
+    path_ = new std::string(dir_->file("mixed.rtrace"));
     write_mixed_trace(*path_);
     reference_ = new std::vector<ChunkCopy>(reference_chunks(*path_));
   }
   static void TearDownTestSuite() {
-    std::filesystem::remove(*path_);
     delete path_;
+    delete dir_;
     delete reference_;
   }
+  static testing::TempDir* dir_;
   static std::string* path_;
   static std::vector<ChunkCopy>* reference_;
 };
+testing::TempDir* ReadAhead::dir_ = nullptr;
 std::string* ReadAhead::path_ = nullptr;
 std::vector<ChunkCopy>* ReadAhead::reference_ = nullptr;
 
@@ -237,8 +234,9 @@ void damage_chunk(const std::string& from, const std::string& to, std::size_t ch
 }
 
 TEST_F(ReadAhead, FileCutShortAfterOpeningIsAReadErrorAtTheFirstMissingChunk) {
+  const testing::TempDir dir;
   for (const bool ahead : {false, true}) {
-    const std::string cut = temp_path(ahead ? "cut-ahead.rtrace" : "cut.rtrace");
+    const std::string cut = dir.file(ahead ? "cut-ahead.rtrace" : "cut.rtrace");
     std::filesystem::copy_file(*path_, cut, std::filesystem::copy_options::overwrite_existing);
     TraceReader reader(cut);
     reader.set_read_ahead(ahead);
@@ -249,12 +247,12 @@ TEST_F(ReadAhead, FileCutShortAfterOpeningIsAReadErrorAtTheFirstMissingChunk) {
     EXPECT_THAT(error,
                 HasSubstr("byte " + std::to_string(reader.chunks()[last_whole + 1].offset) + ": chunk 11: read failed"))
         << (ahead ? "read-ahead" : "plain");
-    std::filesystem::remove(cut);
   }
 }
 
 TEST_F(ReadAhead, DamagedChunkInTheMiddleIsReportedAtThatChunkAfterTheEarlierOnes) {
-  const std::string damaged = temp_path("damaged.rtrace");
+  const testing::TempDir dir;
+  const std::string damaged = dir.file("damaged.rtrace");
   const std::size_t bad = 137;
   for (const bool fix_crc : {false, true}) {
     damage_chunk(*path_, damaged, bad, fix_crc);
@@ -301,7 +299,6 @@ TEST_F(ReadAhead, DamagedChunkInTheMiddleIsReportedAtThatChunkAfterTheEarlierOne
     for (std::size_t i = 0; i < bad; ++i) before += replayed.chunks()[i].records;
     EXPECT_EQ(counter.records, before);
   }
-  std::filesystem::remove(damaged);
 }
 
 TEST_F(ReadAhead, DestroyingAReaderAnywhereStopsItsThreadCleanly) {
@@ -317,7 +314,8 @@ TEST_F(ReadAhead, DestroyingAReaderAnywhereStopsItsThreadCleanly) {
     }
   }
   { TraceReader reader(*path_); }
-  const std::string damaged = temp_path("destroy_damaged.rtrace");
+  const testing::TempDir dir;
+  const std::string damaged = dir.file("destroy_damaged.rtrace");
   damage_chunk(*path_, damaged, 5, false);
   {
     TraceReader reader(damaged);
@@ -325,7 +323,6 @@ TEST_F(ReadAhead, DestroyingAReaderAnywhereStopsItsThreadCleanly) {
     for (std::size_t i = 0; i < 5; ++i) reader.read_chunk(i);
     EXPECT_THAT(error_of(reader, 5), HasSubstr("chunk 5: checksum mismatch"));
   }
-  std::filesystem::remove(damaged);
   TraceReader reader(*path_);
   reader.set_read_ahead(true);
   for (std::size_t i = 0; i < 10; ++i) reader.read_chunk(i);

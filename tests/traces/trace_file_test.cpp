@@ -1,5 +1,3 @@
-#include <unistd.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "core/error.h"
+#include "tests/support/temp_dir.h"
 #include "traces/crc32c.h"
 #include "traces/memory_sink.h"
 #include "traces/text_formats.h"
@@ -19,11 +18,6 @@ namespace rastrace {
 namespace {
 
 using ::testing::HasSubstr;
-
-std::string temp_path(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("rastrace_traces_" + std::to_string(::getpid()) + "_" + name))
-      .string();
-}
 
 TraceMetadata sample_metadata() {
   TraceMetadata m;
@@ -175,7 +169,8 @@ TEST(ChunkCodec, DecodersReportGarbageAsErrorsWithoutReadingPastTheEnd) {
 }
 
 TEST(TraceFile, RoundTripKeepsEveryRecordAndTheMetadata) {
-  const std::string path = temp_path("roundtrip.rtrace");
+  const testing::TempDir dir;
+  const std::string path = dir.file("roundtrip.rtrace");
   write_sample(path);
   TraceReader reader(path);
   EXPECT_EQ(reader.metadata().scene, "builtin:grid");
@@ -192,11 +187,11 @@ TEST(TraceFile, RoundTripKeepsEveryRecordAndTheMetadata) {
   replay_trace(reader, sink);
   EXPECT_TRUE(sink.finished);
   expect_same_events(sink, sample_events());
-  std::filesystem::remove(path);
 }
 
 TEST(TraceFile, StreamingReadersSeeDrawsAndTexelsInOrder) {
-  const std::string path = temp_path("stream.rtrace");
+  const testing::TempDir dir;
+  const std::string path = dir.file("stream.rtrace");
   write_sample(path, 100);
   VertexTraceReader vertices(path);
   VertexBatch batch;
@@ -222,11 +217,11 @@ TEST(TraceFile, StreamingReadersSeeDrawsAndTexelsInOrder) {
   std::uint64_t want = 0;
   for (std::uint32_t i = 0; i < 1000; ++i) want += (i * 3) % 8;
   EXPECT_EQ(x_sum, want);
-  std::filesystem::remove(path);
 }
 
 TEST(TraceFile, WriterWithoutFinishLeavesNoFile) {
-  const std::string path = temp_path("unfinished.rtrace");
+  const testing::TempDir dir;
+  const std::string path = dir.file("unfinished.rtrace");
   {
     TraceWriter writer(path, sample_metadata());
     writer.texel_accesses(sample_events().texels);
@@ -251,24 +246,25 @@ std::string open_error(const std::string& path) {
 }
 
 TEST(TraceFile, WrongMagicIsNamed) {
-  const std::string path = temp_path("magic.rtrace");
+  const testing::TempDir dir;
+  const std::string path = dir.file("magic.rtrace");
   put_bytes(path, "NOTATRACEFILE AT ALL");
   EXPECT_THAT(open_error(path), HasSubstr("byte 0: not a rastrace trace"));
-  std::filesystem::remove(path);
 }
 
 TEST(TraceFile, UnknownVersionIsNamed) {
-  const std::string path = temp_path("version.rtrace");
+  const testing::TempDir dir;
+  const std::string path = dir.file("version.rtrace");
   write_sample(path);
   std::string bytes = bytes_of(path);
   bytes[8] = 7;
   put_bytes(path, bytes);
   EXPECT_THAT(open_error(path), HasSubstr("byte 8: unknown trace version 7"));
-  std::filesystem::remove(path);
 }
 
 TEST(TraceFile, TruncatedFileNamesTheTruncatedChunkAndItsOffset) {
-  const std::string path = temp_path("truncated.rtrace");
+  const testing::TempDir dir;
+  const std::string path = dir.file("truncated.rtrace");
   write_sample(path);
   const std::string bytes = bytes_of(path);
   TraceReader reader(path);
@@ -278,31 +274,31 @@ TEST(TraceFile, TruncatedFileNamesTheTruncatedChunkAndItsOffset) {
   // Cut exactly between chunks: no index.
   put_bytes(path, bytes.substr(0, third.offset));
   EXPECT_THAT(open_error(path), HasSubstr("no chunk index and footer after chunk 2"));
-  std::filesystem::remove(path);
 }
 
 TEST(TraceFile, CorruptedPayloadIsAChecksumMismatchNamingTheChunk) {
-  const std::string path = temp_path("corrupt.rtrace");
+  const testing::TempDir dir;
+  const std::string path = dir.file("corrupt.rtrace");
   write_sample(path);
   std::string bytes = bytes_of(path);
   const ChunkInfo fifth = TraceReader(path).chunks()[4];
   bytes[fifth.offset + kChunkHeaderBytes + 3] ^= 0x20;
   put_bytes(path, bytes);
   EXPECT_THAT(open_error(path), HasSubstr("byte " + std::to_string(fifth.offset) + ": chunk 4: checksum mismatch"));
-  std::filesystem::remove(path);
 }
 
 TEST(TraceFile, CsvExportImportRoundTrip) {
-  const std::string path = temp_path("csv.rtrace"), csv = temp_path("export.csv"), back = temp_path("back.rtrace");
+  const testing::TempDir dir;
+  const std::string path = dir.file("csv.rtrace"), csv = dir.file("export.csv"), back = dir.file("back.rtrace");
   write_sample(path);
   {
     TraceReader reader(path);
     std::ofstream out(csv);
     export_csv(reader, out);
   }
-  EXPECT_EQ(read_csv_metadata(csv), [] {
+  EXPECT_EQ(read_csv_metadata(csv), [&] {
     TraceMetadata m = sample_metadata();
-    m.tool_version = TraceReader(temp_path("csv.rtrace")).metadata().tool_version;
+    m.tool_version = TraceReader(dir.file("csv.rtrace")).metadata().tool_version;
     return m;
   }());
   {
@@ -313,11 +309,11 @@ TEST(TraceFile, CsvExportImportRoundTrip) {
   RecordingSink sink;
   replay_trace(reader, sink);
   expect_same_events(sink, sample_events());
-  for (const auto& p : {path, csv, back}) std::filesystem::remove(p);
 }
 
 TEST(TraceFile, CsvErrorsNameTheLine) {
-  const std::string csv = temp_path("bad.csv");
+  const testing::TempDir dir;
+  const std::string csv = dir.file("bad.csv");
   put_bytes(csv,
             "event,draw,type,restart,vertex,primitive_start,texture,level,x,y,pixel_x,pixel_y,triangle,address,label\n"
             "vertex,,,,12,1,,,,,,,,,\nvertex,,,,x12,0,,,,,,,,,\n");
@@ -328,11 +324,11 @@ TEST(TraceFile, CsvErrorsNameTheLine) {
   } catch (const InputError& e) {
     EXPECT_THAT(std::string(e.what()), HasSubstr(":3: column vertex: 'x12' is not an unsigned number"));
   }
-  std::filesystem::remove(csv);
 }
 
 TEST(TraceFile, DinImportReadsLabelsAndHexAddresses) {
-  const std::string din = temp_path("in.din");
+  const testing::TempDir dir;
+  const std::string din = dir.file("in.din");
   put_bytes(din, "0 1000\n1 0x2000\n\n2 ffffffff\n3 0\n0 40\n");
   RecordingSink sink;
   EXPECT_EQ(import_din(din, sink), 4u);
@@ -349,7 +345,6 @@ TEST(TraceFile, DinImportReadsLabelsAndHexAddresses) {
   } catch (const InputError& e) {
     EXPECT_THAT(std::string(e.what()), HasSubstr("in.din:2: column address: 'zz' is not a hexadecimal number"));
   }
-  std::filesystem::remove(din);
 }
 
 }  // namespace
