@@ -44,26 +44,20 @@ class EvictionChargedFifo {
 }  // namespace
 
 std::uint64_t eviction_charged_transforms(std::span<const std::uint32_t> indices, PrimitiveType type, unsigned entries,
-                                          std::uint32_t restart_index) {
+                                          RestartIndex restart_index) {
   if (entries == 0) throw InputError("vertex cache size 0: expected at least 1 entry");
   EvictionChargedFifo cache(entries);
-  switch (type) {
-    case PrimitiveType::TriangleList:
-      for (std::size_t i = 0; i + 2 < indices.size(); i += 3) cache.add_primitive(&indices[i], 3);
-      break;
-    case PrimitiveType::TriangleListAdjacency:
-      for (std::size_t i = 0; i + 5 < indices.size(); i += 6) cache.add_primitive(&indices[i], 6);
-      break;
-    case PrimitiveType::TriangleStrip:
-      // As a list, as the nvmesh simulator saw strips (NvTriStrip's lists-only output): the
-      // strip's swaps and joins draw nothing and are not in it.
-      for_each_triangle(indices, type, restart_index, [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-        if (a == b || b == c || a == c) return;
-        const std::uint32_t triangle[3] = {a, b, c};
-        cache.add_primitive(triangle, 3);
+  walk_index_stream(
+      indices, type, restart_index, [](std::size_t, bool) {},
+      [&](const AssembledTriangle& t) {
+        if (type != PrimitiveType::TriangleStrip) {
+          cache.add_primitive(&indices[t.first], t.count);
+        } else if (!t.degenerate()) {
+          // As a list, as the nvmesh simulator saw strips (NvTriStrip's lists-only output): the
+          // strip's swaps and joins draw nothing and are not in it.
+          cache.add_primitive(t.vertices.data(), 3);
+        }
       });
-      break;
-  }
   return cache.total();
 }
 

@@ -27,6 +27,6 @@ namespace rastrace {
 // every triangle up, where a strip looks each index up once, so a strip order can cost far more
 // here than as a strip (Hoppe's local order of the 16x16 grid at FIFO 16: 432 against 299).
 std::uint64_t eviction_charged_transforms(std::span<const std::uint32_t> indices, PrimitiveType type, unsigned entries,
-                                          std::uint32_t restart_index = kNoRestart);
+                                          RestartIndex restart_index = kNoRestart);
 
 }  // namespace rastrace

@@ -119,8 +119,7 @@ void LiveBankSink::feed_stream(AddressStream& stream) {
 void LiveBankSink::begin_draw(const DrawInfo& draw) {
   draw_ = draw;
   ++draw_serial_;
-  primitive_count_ = 0;
-  strip_length_ = 0;
+  assembler_ = PrimitiveAssembler(draw.type);
   strips_in_draw_ = 0;
   if (config_.flush_vertex_cache_per_draw)
     for (VertexCache& cache : vertex_caches_) cache.clear();
@@ -135,38 +134,16 @@ void LiveBankSink::on_vertex(std::uint32_t vertex, bool primitive_start) {
     seen_[vertex] = draw_serial_ + 1;
     ++shared_.vertices;
   }
-  const auto triangle = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    if (a == b || b == c || a == c)
+  // The restart index between two strips of a draw was sent, not fetched.
+  if (primitive_start && draw_.type == PrimitiveType::TriangleStrip) {
+    if (strips_in_draw_ > 0 && draw_.restart_index) ++shared_.indices_sent;
+    ++strips_in_draw_;
+  }
+  if (assembler_.push(vertex, primitive_start)) {
+    if (is_degenerate(assembler_.triangle()))
       ++shared_.degenerate;
     else
       ++shared_.triangles;
-  };
-  switch (draw_.type) {
-    case PrimitiveType::TriangleList:
-    case PrimitiveType::TriangleListAdjacency: {
-      const unsigned size = draw_.type == PrimitiveType::TriangleList ? 3 : 6;
-      if (primitive_start) primitive_count_ = 0;
-      if (primitive_count_ < size) primitive_[primitive_count_] = vertex;
-      if (++primitive_count_ == size) {
-        if (size == 3)
-          triangle(primitive_[0], primitive_[1], primitive_[2]);
-        else
-          triangle(primitive_[0], primitive_[2], primitive_[4]);
-      }
-      break;
-    }
-    case PrimitiveType::TriangleStrip:
-      if (primitive_start) {
-        // The restart index between two strips was sent, not fetched.
-        if ((strips_in_draw_ > 0 || strip_length_ > 0) && draw_.restart_index != kNoRestart) ++shared_.indices_sent;
-        ++strips_in_draw_;
-        strip_length_ = 0;
-      }
-      primitive_[0] = primitive_[1];
-      primitive_[1] = primitive_[2];
-      primitive_[2] = vertex;
-      if (++strip_length_ >= 3) triangle(primitive_[0], primitive_[1], primitive_[2]);
-      break;
   }
 }
 

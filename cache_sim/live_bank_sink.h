@@ -97,9 +97,7 @@ class LiveBankSink final : public EventSink {
   DrawInfo draw_{};
   std::uint32_t draw_serial_ = 0;    // counts begin_draw calls (distinct-vertex stamps)
   std::vector<std::uint32_t> seen_;  // per vertex: draw_serial_ + 1 when referenced in this draw
-  std::uint32_t primitive_[6] = {};
-  unsigned primitive_count_ = 0;
-  std::uint64_t strip_length_ = 0;
+  PrimitiveAssembler assembler_{PrimitiveType::TriangleList};
   std::uint64_t strips_in_draw_ = 0;
 
   // Byte caches.

@@ -82,7 +82,7 @@ VertexStreamStats simulate_fifo_list(std::span<const std::uint32_t> indices, uns
 }  // namespace
 
 VertexStreamStats simulate_vertex_stream(std::span<const std::uint32_t> indices, PrimitiveType type,
-                                         VertexCachePolicy policy, unsigned entries, std::uint32_t restart_index) {
+                                         VertexCachePolicy policy, unsigned entries, RestartIndex restart_index) {
   VertexCache cache(policy, entries);
   // 2^32 - entries misses would wrap the 32-bit clock: longer streams take the general path.
   if (type == PrimitiveType::TriangleList && policy == VertexCachePolicy::Fifo &&
@@ -92,7 +92,7 @@ VertexStreamStats simulate_vertex_stream(std::span<const std::uint32_t> indices,
   std::vector<bool> seen;
   for (const std::uint32_t index : indices) {
     ++stats.indices_sent;
-    if (type == PrimitiveType::TriangleStrip && index == restart_index) continue;
+    if (is_restart(type, restart_index, index)) continue;
     ++stats.lookups;
     if (!cache.access(index)) ++stats.misses;
     if (index >= seen.size()) seen.resize(static_cast<std::size_t>(index) + 1, false);

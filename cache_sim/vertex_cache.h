@@ -66,39 +66,6 @@ struct VertexStreamStats {
 // Runs an index stream through a vertex cache, primitive by primitive as the pipeline does.
 VertexStreamStats simulate_vertex_stream(std::span<const std::uint32_t> indices, PrimitiveType type,
                                          VertexCachePolicy policy, unsigned entries,
-                                         std::uint32_t restart_index = kNoRestart);
-
-// Calls visit(a, b, c) for every triangle of the stream in draw order (degenerates included),
-// with the winding GL gives it (a strip's odd triangles are flipped back to the strip's winding).
-template <typename Visit>
-void for_each_triangle(std::span<const std::uint32_t> indices, PrimitiveType type, std::uint32_t restart_index,
-                       Visit&& visit) {
-  switch (type) {
-    case PrimitiveType::TriangleList:
-      for (std::size_t i = 0; i + 2 < indices.size(); i += 3) visit(indices[i], indices[i + 1], indices[i + 2]);
-      break;
-    case PrimitiveType::TriangleListAdjacency:
-      for (std::size_t i = 0; i + 5 < indices.size(); i += 6) visit(indices[i], indices[i + 2], indices[i + 4]);
-      break;
-    case PrimitiveType::TriangleStrip: {
-      std::size_t in_strip = 0;
-      for (std::size_t i = 0; i < indices.size(); ++i) {
-        if (indices[i] == restart_index) {
-          in_strip = 0;
-          continue;
-        }
-        if (++in_strip >= 3) {
-          // GL: triangle i of a strip is (v[i], v[i+1], v[i+2]) for even i, (v[i+1], v[i], v[i+2]) for odd.
-          const bool odd = (in_strip - 3) % 2 == 1;
-          if (odd)
-            visit(indices[i - 1], indices[i - 2], indices[i]);
-          else
-            visit(indices[i - 2], indices[i - 1], indices[i]);
-        }
-      }
-      break;
-    }
-  }
-}
+                                         RestartIndex restart_index = kNoRestart);
 
 }  // namespace rastrace

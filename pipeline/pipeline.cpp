@@ -79,7 +79,7 @@ void Pipeline::draw(const Mesh& mesh, const glm::mat4& model, const DrawCall& ca
     DrawInfo info;
     info.draw = draw;
     info.type = call.type;
-    info.restart_index = call.restart_index;
+    if (call.type == PrimitiveType::TriangleStrip) info.restart_index = call.restart_index;
     sink_->begin_draw(info);
   }
 
@@ -127,42 +127,10 @@ void Pipeline::draw(const Mesh& mesh, const glm::mat4& model, const DrawCall& ca
     triangle(mesh, a, b, c, material < mesh.materials.size() ? mesh.materials[material] : kWhite, state);
   };
 
-  const std::span<const std::uint32_t> idx = call.indices;
-  switch (call.type) {
-    case PrimitiveType::TriangleList:
-      // GL ignores a trailing incomplete primitive; so do we (its indices are not fetched).
-      for (std::size_t i = 0; i + 2 < idx.size(); i += 3) {
-        fetch(i, true);
-        fetch(i + 1, false);
-        fetch(i + 2, false);
-        assemble(idx[i], idx[i + 1], idx[i + 2], idx.subspan(i, 3));
-      }
-      break;
-    case PrimitiveType::TriangleListAdjacency:
-      for (std::size_t i = 0; i + 5 < idx.size(); i += 6) {
-        for (std::size_t j = 0; j < 6; ++j) fetch(i + j, j == 0);
-        assemble(idx[i], idx[i + 2], idx[i + 4], idx.subspan(i, 6));
-      }
-      break;
-    case PrimitiveType::TriangleStrip: {
-      std::size_t in_strip = 0;
-      for (std::size_t i = 0; i < idx.size(); ++i) {
-        if (idx[i] == call.restart_index) {
-          in_strip = 0;
-          continue;
-        }
-        fetch(i, in_strip == 0);
-        if (++in_strip >= 3) {
-          // GL: triangle k of a strip is (v[k], v[k+1], v[k+2]) for even k, (v[k+1], v[k], v[k+2]) for odd k.
-          if ((in_strip - 3) % 2 == 1)
-            assemble(idx[i - 1], idx[i - 2], idx[i], idx.subspan(i - 2, 3));
-          else
-            assemble(idx[i - 2], idx[i - 1], idx[i], idx.subspan(i - 2, 3));
-        }
-      }
-      break;
-    }
-  }
+  // GL ignores a trailing incomplete list primitive; so do we (its indices are not fetched).
+  walk_index_stream(call.indices, call.type, call.restart_index, fetch, [&](const AssembledTriangle& t) {
+    assemble(t.vertices[0], t.vertices[1], t.vertices[2], call.indices.subspan(t.first, t.count));
+  });
 
   flush_fetches();
   rasterizer_.flush();

@@ -2,7 +2,7 @@
 // cache (cache_sim's VertexCache decides which vertices are shaded) -> vertex shading ->
 // primitive assembly -> clipping -> perspective divide -> viewport -> culling -> rasterizer.
 //
-// Primitive types (traces/events.h): a triangle list; a strip with a primitive-restart index,
+// Primitive types (core/index_stream.h): a triangle list; a strip with an optional restart index,
 // degenerate triangles and GL's alternating winding (odd triangles drawn as (v1, v0, v2)); a list
 // with adjacency (6 indices, GL_TRIANGLES_ADJACENCY: 0, 2, 4 is the triangle, 1, 3, 5 the
 // adjacent vertices). Shader invocations are counted as hardware does: one per cache miss,
@@ -48,7 +48,7 @@ struct PipelineOptions {
 struct DrawCall {
   std::span<const std::uint32_t> indices;
   PrimitiveType type = PrimitiveType::TriangleList;
-  std::uint32_t restart_index = kNoRestart;
+  RestartIndex restart_index = kNoRestart;
   std::uint32_t material = 0;  // index into Mesh::materials (none: white, untextured)
   // Optional: one material per primitive (lists and adjacency lists), e.g. Mesh::face_material.
   std::span<const std::uint32_t> primitive_materials;

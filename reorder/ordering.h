@@ -32,7 +32,7 @@ struct Ordering {
   // duplicated indices (swaps, degenerates) and restart_index.
   PrimitiveType type = PrimitiveType::TriangleList;
   std::vector<std::uint32_t> indices;
-  std::uint32_t restart_index = kNoRestart;
+  RestartIndex restart_index = kNoRestart;
 };
 
 using ReorderFunction = Ordering (*)(const Mesh& mesh, const ReorderParams& params);

@@ -23,38 +23,19 @@ std::uint32_t neighbor_across(const Mesh& mesh, const MeshTopology& topology, st
 
 }  // namespace
 
-StripStats strip_stats(std::span<const std::uint32_t> indices, PrimitiveType type, std::uint32_t restart_index) {
+StripStats strip_stats(std::span<const std::uint32_t> indices, PrimitiveType type, RestartIndex restart_index) {
   StripStats stats;
   stats.indices = indices.size();
-  if (type != PrimitiveType::TriangleStrip) {
-    const std::size_t per = type == PrimitiveType::TriangleList ? 3 : 6;
-    stats.vertices_sent = indices.size();
-    for (std::size_t i = 0; i + per <= indices.size(); i += per) {
-      const std::uint32_t a = indices[i], b = indices[i + (per == 6 ? 2 : 1)], c = indices[i + (per == 6 ? 4 : 2)];
-      ++stats.strips;
-      if (a == b || b == c || a == c)
-        ++stats.swaps;
-      else
-        ++stats.triangles;
-    }
-    return stats;
-  }
-  std::size_t in_strip = 0;
-  for (std::size_t i = 0; i < indices.size(); ++i) {
-    if (indices[i] == restart_index) {
-      in_strip = 0;
-      continue;
-    }
-    ++stats.vertices_sent;
-    if (++in_strip == 1) ++stats.strips;
-    if (in_strip >= 3) {
-      const std::uint32_t a = indices[i - 2], b = indices[i - 1], c = indices[i];
-      if (a == b || b == c || a == c)
-        ++stats.swaps;
-      else
-        ++stats.triangles;
-    }
-  }
+  // Lists: every index is sent as a vertex, a trailing partial primitive included.
+  for (const std::uint32_t index : indices) stats.vertices_sent += !is_restart(type, restart_index, index);
+  walk_index_stream(
+      indices, type, restart_index, [&](std::size_t, bool primitive_start) { stats.strips += primitive_start; },
+      [&](const AssembledTriangle& t) {
+        if (t.degenerate())
+          ++stats.swaps;
+        else
+          ++stats.triangles;
+      });
   return stats;
 }
 

@@ -30,8 +30,6 @@
 
 namespace rastrace {
 
-inline constexpr std::uint32_t kStripRestart = 0xFFFFFFFFu;
-
 struct StripStats {
   std::uint64_t strips = 0;         // non-empty strips
   std::uint64_t triangles = 0;      // drawn (non-degenerate) triangles
@@ -47,7 +45,7 @@ struct StripStats {
 // Counts a strip stream (restart_index separates strips; kNoRestart if there is none). A list
 // stream can be passed as type TriangleList: then every triangle is its own 3-vertex "strip".
 StripStats strip_stats(std::span<const std::uint32_t> indices, PrimitiveType type,
-                       std::uint32_t restart_index = kStripRestart);
+                       RestartIndex restart_index = kStripRestart);
 
 // The strip stream that draws the faces in exactly the given order (see above). The result is a
 // TriangleStrip Ordering with face_order = order.

@@ -76,7 +76,7 @@ std::vector<std::uint32_t> uv_charts(const Mesh& mesh, const std::vector<std::ui
 // index for 32-bit indices and never a vertex id, so every strip stream can use it.
 void append_strip(Ordering& out, const Ordering& group) {
   if (group.indices.empty()) return;
-  if (!out.indices.empty()) out.indices.push_back(group.restart_index);
+  if (!out.indices.empty()) out.indices.push_back(group.restart_index.value_or(kStripRestart));
   out.indices.insert(out.indices.end(), group.indices.begin(), group.indices.end());
 }
 
@@ -206,13 +206,14 @@ Ordering reorder_texgroup(const Mesh& mesh, const ReorderParams& params) {
     }
     Ordering ordered = base.run(part, params);
     for (std::uint32_t& index : ordered.indices)
-      if (!(ordered.type == PrimitiveType::TriangleStrip && index == ordered.restart_index))
-        index = global_of_local[index];
+      if (!is_restart(ordered.type, ordered.restart_index, index)) index = global_of_local[index];
     for (const std::uint32_t v : global_of_local) local_of_vertex[v] = kNoFace;
 
     if (first) {
       result.type = ordered.type;
-      result.restart_index = ordered.restart_index;
+      // The groups' strips are joined with restarts, so the result restarts even if a group's does not.
+      if (ordered.type == PrimitiveType::TriangleStrip)
+        result.restart_index = ordered.restart_index.value_or(kStripRestart);
       first = false;
     }
     for (const std::uint32_t local_face : ordered.face_order)

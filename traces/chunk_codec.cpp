@@ -263,8 +263,11 @@ constexpr std::size_t kBlock = 512;
 void encode_vertex_records(const DrawInfo& draw, std::span<const VertexFetch> f, std::string& raw) {
   raw.clear();
   put<std::uint32_t>(raw, draw.draw);
-  put<std::uint8_t>(raw, static_cast<std::uint8_t>(draw.type));
-  put<std::uint32_t>(raw, draw.restart_index);
+  const bool strip = draw.type == PrimitiveType::TriangleStrip;
+  const bool restarts = strip && draw.restart_index.has_value();
+  put<std::uint8_t>(raw, static_cast<std::uint8_t>(static_cast<std::uint8_t>(draw.type) |
+                                                   (strip && !restarts ? kStripWithoutRestart : 0)));
+  put<std::uint32_t>(raw, restarts ? *draw.restart_index : kStripRestart);
   put_column(raw, f.size(), [&](std::size_t i) { return std::uint64_t{f[i].vertex}; });
   const std::size_t start = raw.size();
   raw.resize(start + (f.size() + 7) / 8, 0);
@@ -294,11 +297,15 @@ std::string decode_vertex_records(std::span<const std::uint8_t> raw, std::uint32
                                   std::vector<VertexFetch>& out) {
   Cursor c{raw.data(), raw.data() + raw.size(), {}};
   draw.draw = c.get<std::uint32_t>("draw header");
-  const std::uint8_t type = c.get<std::uint8_t>("draw header");
-  draw.restart_index = c.get<std::uint32_t>("draw header");
+  const std::uint8_t type_byte = c.get<std::uint8_t>("draw header");
+  const std::uint32_t restart = c.get<std::uint32_t>("draw header");
   if (!c.error.empty()) return c.error;
-  if (type > 2) return "unknown primitive type " + std::to_string(type) + " (expected 0, 1 or 2)";
+  const std::uint8_t type = type_byte & static_cast<std::uint8_t>(~kStripWithoutRestart);
+  if (type > 2 || (type_byte != type && type != 1))
+    return "unknown primitive type byte " + std::to_string(type_byte) + " (expected 0, 1, 2 or 129)";
   draw.type = static_cast<PrimitiveType>(type);
+  // Files written before the flag existed store every strip's restart index, 0xFFFFFFFF included.
+  draw.restart_index = type == 1 && type_byte == type ? RestartIndex{restart} : kNoRestart;
   out.resize(n);
   VertexFetch* f = out.data();
   Column vertex;

@@ -3,8 +3,10 @@
 // following records: mode 0, 1, 2, 4, 8 = fixed width w bytes each, little endian; mode 0x81 = a
 // u32 count of escapes, one byte per delta (0xFF = escaped), then the escaped deltas, 8 bytes each. Rendered traces
 // move in small steps (neighbouring texels, consecutive vertex ids), so most deltas fit one byte or none, and decoding
-// is a flat prefix sum per column. Vertex chunks start with their draw (draw number, primitive type, restart index) and
-// keep primitive starts as a bitmap.
+// is a flat prefix sum per column. Vertex chunks start with their draw (u32 draw number, u8 primitive type, u32 restart
+// index) and keep primitive starts as a bitmap. The type byte of a strip without primitive restart has
+// kStripWithoutRestart set (its restart field is then meaningless); a strip without the flag restarts at the stored
+// index, which is how files written before the flag existed read. List draws carry no restart index.
 #pragma once
 
 #include <cstdint>
@@ -17,6 +19,7 @@
 namespace rastrace {
 
 enum class RecordKind : std::uint8_t { Vertex = 1, Texel = 2, Address = 3 };
+inline constexpr std::uint8_t kStripWithoutRestart = 0x80;
 const char* to_string(RecordKind kind);
 
 void encode_vertex_records(const DrawInfo& draw, std::span<const VertexFetch> fetches, std::string& raw);

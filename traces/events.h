@@ -5,21 +5,15 @@
 
 #include <cstdint>
 
+#include "core/index_stream.h"
+
 namespace rastrace {
-
-enum class PrimitiveType : std::uint8_t {
-  TriangleList = 0,           // 3 indices per triangle
-  TriangleStrip = 1,          // GL strip; restart index ends a strip; alternating winding
-  TriangleListAdjacency = 2,  // 6 indices per primitive, GL_TRIANGLES_ADJACENCY order
-};
-
-inline constexpr std::uint32_t kNoRestart = 0xFFFFFFFFu;
 
 // Starts a draw call; its vertex fetches follow.
 struct DrawInfo {
   std::uint32_t draw = 0;  // draw number within the frame
   PrimitiveType type = PrimitiveType::TriangleList;
-  std::uint32_t restart_index = kNoRestart;  // TriangleStrip only: the primitive-restart index
+  RestartIndex restart_index = kNoRestart;  // TriangleStrip only: the primitive-restart index, if any
 };
 
 // One index of the index stream, in submission order. A strip's restart index is not a fetch:

@@ -19,7 +19,9 @@ class CsvExportSink final : public EventSink {
  public:
   explicit CsvExportSink(std::ostream& out) : out_(out) {}
   void begin_draw(const DrawInfo& d) override {
-    out_ << "begin_draw," << d.draw << ',' << static_cast<int>(d.type) << ',' << d.restart_index << ",,,,,,,,,,,\n";
+    out_ << "begin_draw," << d.draw << ',' << static_cast<int>(d.type) << ',';
+    if (d.type == PrimitiveType::TriangleStrip && d.restart_index) out_ << *d.restart_index;
+    out_ << ",,,,,,,,,,,\n";
   }
   void end_draw() override { out_ << "end_draw,,,,,,,,,,,,,,\n"; }
   void vertex_fetches(std::span<const VertexFetch> fetches) override {
@@ -123,7 +125,12 @@ void import_csv(const std::string& path, EventSink& sink) {
       const unsigned type = number<unsigned>(f[2], path, line, "type");
       if (type > 2) throw_at_line(path, line, "column type: expected 0 (list), 1 (strip) or 2 (list with adjacency)");
       d.type = static_cast<PrimitiveType>(type);
-      d.restart_index = number<std::uint32_t>(f[3], path, line, "restart");
+      // Empty: no restart. Files written before that spelling store 4294967295 for every draw; a
+      // list has no restart, a strip restarts at the stored index.
+      if (d.type == PrimitiveType::TriangleStrip && !f[3].empty())
+        d.restart_index = number<std::uint32_t>(f[3], path, line, "restart");
+      else if (!f[3].empty())
+        number<std::uint32_t>(f[3], path, line, "restart");
       sink.begin_draw(d);
     } else if (f[0] == "end_draw") {
       flush();

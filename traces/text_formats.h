@@ -2,7 +2,8 @@
 //   CSV (export and import): one event per row, fixed columns
 //     event,draw,type,restart,vertex,primitive_start,texture,level,x,y,pixel_x,pixel_y,triangle,address,label
 //   with event = begin_draw | end_draw | vertex | texel | address and the other columns empty when
-//   they do not apply; the first line is "# rastrace metadata: <metadata JSON>".
+//   they do not apply (restart is empty unless the draw is a strip with primitive restart); the
+//   first line is "# rastrace metadata: <metadata JSON>".
 //   Dinero IV din (import): "label hexaddress" per line, label 0 read, 1 write, 2 instruction
 //   fetch (all three are accesses); 3 (escape) lines are skipped; 4 (cache flush) is refused.
 // Malformed lines give an InputError "file:line: ..." saying what was expected.

@@ -79,8 +79,8 @@ TEST(EvictionCharged, RepeatedMissingVertexIsChargedTwiceOnlyWhenTheCacheIsFull)
 
 TEST(EvictionCharged, StripsAreAssembledIntoTriangles) {
   // Strip 0 1 2 3 | restart | 4 5 6: triangles (0 1 2) (2 1 3) (4 5 6): 7 vertices, no repeats.
-  const std::vector<std::uint32_t> strip = {0, 1, 2, 3, kNoRestart, 4, 5, 6};
-  EXPECT_EQ(eviction_charged_transforms(strip, PrimitiveType::TriangleStrip, 16, kNoRestart), 7u);
+  const std::vector<std::uint32_t> strip = {0, 1, 2, 3, kStripRestart, 4, 5, 6};
+  EXPECT_EQ(eviction_charged_transforms(strip, PrimitiveType::TriangleStrip, 16, kStripRestart), 7u);
 }
 
 TEST(EvictionCharged, StripSwapsAndJoinsAreNotCharged) {

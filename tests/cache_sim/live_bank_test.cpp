@@ -12,20 +12,15 @@ namespace {
 
 // Sends an index buffer as the pipeline does: primitive starts marked, restart indices dropped.
 void send_index_buffer(EventSink& sink, std::uint32_t draw, PrimitiveType type, std::span<const std::uint32_t> indices,
-                       std::uint32_t restart = kNoRestart) {
+                       RestartIndex restart = kNoRestart) {
   sink.begin_draw({draw, type, restart});
   std::vector<VertexFetch> fetches;
-  const std::size_t size = type == PrimitiveType::TriangleList ? 3 : 6;
-  bool next_starts = true;
-  for (std::size_t i = 0; i < indices.size(); ++i) {
-    if (type == PrimitiveType::TriangleStrip && indices[i] == restart) {
-      next_starts = true;
-      continue;
-    }
-    const bool start = type == PrimitiveType::TriangleStrip ? next_starts : i % size == 0;
-    fetches.push_back({indices[i], start});
-    next_starts = false;
-  }
+  walk_index_stream(
+      indices, type, restart,
+      [&](std::size_t i, bool start) {
+        fetches.push_back({indices[i], start});
+      },
+      [](const AssembledTriangle&) {});
   // Uneven batches: statistics must not depend on how the renderer batches.
   for (std::size_t i = 0; i < fetches.size(); i += 37)
     sink.vertex_fetches(std::span(fetches).subspan(i, std::min<std::size_t>(37, fetches.size() - i)));

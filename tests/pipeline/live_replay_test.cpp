@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "cache_sim/live_bank_sink.h"
+#include "pipeline/pipeline.h"
 #include "pipeline/render_scene.h"
 #include "tests/support/tee_sink.h"
 #include "tests/support/temp_dir.h"
@@ -88,6 +89,71 @@ TEST(LiveReplay, LiveCacheBankEqualsReplayOfTheWrittenTraceToTheMiss) {
   // The pipeline's own shader invocations are the live model's FIFO-16 misses.
   EXPECT_EQ(live.vertex_stats()[0].misses, result.pipeline.vertices_shaded);
   EXPECT_EQ(live.vertex_stats()[0].triangles, result.pipeline.triangles);
+}
+
+TEST(LiveReplay, StripRestartingAt0xFFFFFFFFCountsItsRestartsLiveAndReplayed) {
+  // Three strips of one draw, restarting at GL's fixed index 0xFFFFFFFF (which once doubled as
+  // "no restart", so the two restarts went uncounted in indices sent):
+  //   0 1 2 3 4 5 | 4 5 6 6 6 7 8 9 | 2 3 4
+  // 19 indices sent, 17 fetched; 4 + 3 + 1 = 8 triangles drawn, 3 degenerate (6 5 6, 6 6 6, 6 6 7).
+  Mesh mesh;
+  mesh.name = "strip row";
+  for (int k = 0; k < 5; ++k) {
+    const float x = -0.9f + 0.45f * static_cast<float>(k);
+    mesh.positions.emplace_back(x, 0.5f, 0.0f);
+    mesh.positions.emplace_back(x, -0.5f, 0.0f);
+  }
+  constexpr std::uint32_t R = kStripRestart;
+  const std::vector<std::uint32_t> indices = {0, 1, 2, 3, 4, 5, R, 4, 5, 6, 6, 6, 7, 8, 9, R, 2, 3, 4};
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("rastrace-restart-" + std::to_string(::getpid()) + ".rtrace"))
+          .string();
+  CacheBankConfig config;
+  config.vertex = {{VertexCachePolicy::Fifo, 16}, {VertexCachePolicy::Fifo, 4}, {VertexCachePolicy::Lru, 4}};
+  LiveBankSink live(config, {});
+  PipelineStats rendered;
+  {
+    TraceWriter writer(path, TraceMetadata{});
+    Tee tee(live, writer);
+    Framebuffer framebuffer(64, 64);
+    Pipeline pipeline(framebuffer, PipelineOptions{}, &tee);
+    DrawCall call;
+    call.indices = indices;
+    call.type = PrimitiveType::TriangleStrip;
+    call.restart_index = R;
+    pipeline.draw(mesh, glm::mat4(1.0f), call, {});
+    pipeline.finish();
+    rendered = pipeline.stats();
+  }
+  LiveBankSink replayed(config, {});
+  replay_file(path, replayed);
+  MemorySink events;
+  replay_file(path, events);
+  std::filesystem::remove(path);
+
+  ASSERT_EQ(events.draws.size(), 1u);
+  EXPECT_EQ(events.draws[0].restart_index, R);
+  EXPECT_EQ(rendered.lookups, 17u);
+  EXPECT_EQ(rendered.triangles, 8u);
+  EXPECT_EQ(rendered.vertices_shaded, 10u);
+  // FIFO 4 and LRU 4 both miss 0-9 once and 2 3 4 again at the end.
+  const std::uint64_t misses[] = {10, 13, 13};
+  for (const LiveBankSink* bank : {&live, &replayed}) {
+    ASSERT_EQ(bank->vertex_stats().size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) {
+      const VertexStreamStats& s = bank->vertex_stats()[i];
+      EXPECT_EQ(s.indices_sent, 19u) << "cache " << i;
+      EXPECT_EQ(s.lookups, 17u);
+      EXPECT_EQ(s.misses, misses[i]) << "cache " << i;
+      EXPECT_EQ(s.triangles, 8u);
+      EXPECT_EQ(s.degenerate, 3u);
+      EXPECT_EQ(s.vertices, 10u);
+      const VertexStreamStats model = simulate_vertex_stream(indices, PrimitiveType::TriangleStrip,
+                                                             config.vertex[i].policy, config.vertex[i].entries, R);
+      EXPECT_EQ(model.indices_sent, s.indices_sent);
+      EXPECT_EQ(model.misses, s.misses);
+    }
+  }
 }
 
 }  // namespace

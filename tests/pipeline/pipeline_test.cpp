@@ -90,6 +90,25 @@ TEST(Pipeline, StripWithRestartAndDegeneratesFetchesEveryIndexAndKeepsOneWinding
   EXPECT_EQ(draw(mesh, call, options).culled, 7u);
 }
 
+TEST(Pipeline, StripWithoutRestartTreats0xFFFFFFFFAsAVertexNotARestart) {
+  const Mesh mesh = strip_row(3);
+  const std::vector<std::uint32_t> indices = {0, 1, 2, kStripRestart, 3, 4, 5};
+  DrawCall call;
+  call.indices = indices;
+  call.type = PrimitiveType::TriangleStrip;
+  // Restarting at 0xFFFFFFFF: two strips, two triangles.
+  call.restart_index = kStripRestart;
+  EXPECT_EQ(draw(mesh, call, PipelineOptions{}).triangles, 2u);
+  // Without restart the index is a vertex, and out of range.
+  call.restart_index = kNoRestart;
+  try {
+    draw(mesh, call, PipelineOptions{});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "test mesh: draw 0, index 3: vertex 4294967295 >= vertex count 6");
+  }
+}
+
 TEST(Pipeline, ShaderInvocationsAreTheVertexCacheMissesOnBunny00) {
   const Mesh& bunny = testing::cached_mesh("bunny00.off");
   for (const VertexCachePolicy policy : {VertexCachePolicy::Fifo, VertexCachePolicy::Lru}) {

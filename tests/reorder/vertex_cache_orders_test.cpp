@@ -30,7 +30,7 @@ ReorderParams params_for(unsigned cache) {
 }
 
 std::uint64_t fifo_misses(std::span<const std::uint32_t> indices, PrimitiveType type, unsigned cache,
-                          std::uint32_t restart = kNoRestart) {
+                          RestartIndex restart = kNoRestart) {
   return simulate_vertex_stream(indices, type, VertexCachePolicy::Fifo, cache, restart).misses;
 }
 
