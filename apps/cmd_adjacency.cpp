@@ -4,7 +4,7 @@
 // restricted assignment, orders the primitives, and prints one row per ordering: faces, dual
 // edges, |C| (and % of faces), B, C/B, primitives and indices per face, misses and CM/V in a FIFO
 // post-transform cache, and two gains (baseline misses / the row's misses): `gain` over
-// `baseline` (kcache on the cover faces alone, issue 7's definition) and `gain_mesh` over
+// `baseline` (kcache on the cover faces alone, the project's definition) and `gain_mesh` over
 // `baseline-mesh` (kcache on all the mesh's faces, each primitive drawn at its first face: the
 // paper's naive use of a triangle method). `--order all` adds the naive scheme (one primitive
 // per face, ordered by kcache) for comparison.

@@ -1,5 +1,5 @@
 // Vertex transforms counted the way NVIDIA Mesh Tools' VertexCache (nvmesh, 2006) counts them: the
-// simulator behind Castano's "Optimal Grid Rendering" tables (papers/castano-optimal-grid-rendering.txt).
+// simulator behind Castano's "Optimal Grid Rendering" tables (2009).
 //
 // That simulator is a true FIFO, but it does not count misses. Per triangle it counts the indices
 // not in the cache before the triangle, a repeated index once per occurrence, and charges one

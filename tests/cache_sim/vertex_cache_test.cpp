@@ -21,7 +21,7 @@ TEST(VertexCache, GridInScanlineOrderMatchesCastanoScanlineRow) {
 }
 
 TEST(VertexCache, HoppeFifoAnomalyHasTwiceTheMissesAtFiveEntriesAsAtFour) {
-  // papers/hoppe1999: 6,1,7,2,4,6, then (1,2,3,4,5,6,7) repeated.
+  // Hoppe 1999: 6,1,7,2,4,6, then (1,2,3,4,5,6,7) repeated.
   std::vector<std::uint32_t> sequence = {6, 1, 7, 2, 4, 6};
   const std::vector<std::uint32_t> period = {1, 2, 3, 4, 5, 6, 7};
   const int repeats = 22;

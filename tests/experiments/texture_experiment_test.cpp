@@ -1,5 +1,5 @@
-// Yang, Mitra and Huang's texture experiment (issue: texture-cache experiments): texture-grouped
-// strips against strips on the four-colour bunny, determinism, and live simulation against replay.
+// Yang, Mitra and Huang's texture experiment: texture-grouped strips against strips on the
+// four-colour bunny, determinism, and live simulation against replay.
 #include <cstdio>
 #include <filesystem>
 #include <map>
