@@ -14,7 +14,7 @@
 #include <memory>
 
 #include "apps/commands.h"
-#include "apps/render_wiring.h"
+#include "apps/render_flags.h"
 #include "core/error.h"
 #include "core/table.h"
 #include "reference/image_compare.h"

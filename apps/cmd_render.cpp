@@ -8,12 +8,14 @@
 #include <optional>
 
 #include "apps/commands.h"
-#include "apps/render_wiring.h"
+#include "apps/render_flags.h"
 #include "cache_sim/live_bank_sink.h"
 #include "cache_sim/texture_layout.h"
 #include "core/error.h"
 #include "core/table.h"
 #include "core/units.h"
+#include "pipeline/scene_order.h"
+#include "traces/tee_sink.h"
 #include "traces/trace_writer.h"
 
 namespace rastrace {
@@ -57,19 +59,7 @@ void run_render(const RenderCommand& command) {
   std::vector<EventSink*> sinks = {&bank};
   std::optional<TraceWriter> writer;
   if (!command.trace.empty()) {
-    TraceMetadata metadata;
-    metadata.scene = command.flags.scene;
-    metadata.ordering = command.flags.order;
-    metadata.width = static_cast<std::uint32_t>(scene.width);
-    metadata.height = static_cast<std::uint32_t>(scene.height);
-    metadata.filter = command.flags.filter;
-    metadata.textures = levels;
-    metadata.extra = {{"raster", command.flags.raster},
-                      {"wrap", command.flags.wrap},
-                      {"lod", command.flags.lod},
-                      {"cull", command.flags.cull},
-                      {"lighting", command.flags.lighting ? "on" : "off"}};
-    writer.emplace(command.trace, metadata);
+    writer.emplace(command.trace, render_trace_metadata(command.flags, scene, levels));
     sinks.push_back(&*writer);
   }
   TeeSink tee(sinks);

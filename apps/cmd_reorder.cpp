@@ -7,10 +7,10 @@
 #include <memory>
 
 #include "apps/commands.h"
-#include "apps/mesh_spec.h"
 #include "cache_sim/vertex_cache.h"
 #include "reorder/ordering.h"
 #include "scenes/mesh_io.h"
+#include "scenes/mesh_spec.h"
 
 namespace rastrace {
 

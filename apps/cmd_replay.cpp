@@ -4,11 +4,11 @@
 #include <memory>
 #include <optional>
 
-#include "apps/cache_report.h"
 #include "apps/commands.h"
 #include "core/error.h"
 #include "core/progress.h"
 #include "core/units.h"
+#include "experiments/cache_report.h"
 
 namespace rastrace {
 

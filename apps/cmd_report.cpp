@@ -1,33 +1,17 @@
 // `rastrace report [SCENE] [-o DIR]`: the main job, a compact version of every experiment on one
-// scene. It renders the frame, compares the vertex cache under each ordering, renders the chosen
-// orderings with scanline and tiled traversal, records their texel traces, sweeps texture caches
-// over them (sizes, FIFO/LRU/OPT, layouts) and writes DIR/report.md with the tables, the plots
-// (DIR/plots) and the frames (DIR/images). Everything in it is deterministic: running the same
-// command again writes the same bytes.
-#include <filesystem>
-#include <iostream>
-#include <map>
+// scene, written to DIR/report.md (experiments/report.h).
 #include <memory>
-#include <sstream>
 
-#include "apps/cache_report.h"
 #include "apps/commands.h"
-#include "apps/mesh_spec.h"
 #include "apps/sweep_flags.h"
-#include "apps/texture_experiment.h"
-#include "apps/vcache_table.h"
-#include "core/error.h"
-#include "core/units.h"
+#include "experiments/report.h"
 
 namespace rastrace {
 
 namespace {
 
 struct ReportCommand {
-  std::string scene = "builtin:bunny";
-  std::string output_dir = "out";
-  std::string orders = "strip,texgroup,tipsy";
-  std::string vcache_orders = "original,scanline,morton,hilbert,strip,forsyth,tipsy,kcache,greedy,texgroup";
+  ReportSpec spec;
   SweepFlags sweep{.sizes = "1KiB..64KiB",
                    .lines = "64B",
                    .assocs = "full",
@@ -35,125 +19,30 @@ struct ReportCommand {
                    .layouts = "linear,block4,block8,morton"};
 };
 
-// Misses of texgroup against strip per cache size, for one raster, layout and policy.
-Table grouping_table(const std::vector<TextureRun>& runs, const std::string& raster, const std::string& layout,
-                     ReplacementPolicy policy) {
-  Table table;
-  table.title = "Texture-grouped against strips (" + raster + ", " + layout + ", " + to_string(policy) + ")";
-  table.columns = {{"size_bytes", "cache size", 0},           {"strip_misses", "strip misses", 0},
-                   {"texgroup_misses", "texgroup misses", 0}, {"reduction", "reduction %", 1},
-                   {"strip_acmr", "strip vertex ACMR", 3},    {"texgroup_acmr", "texgroup vertex ACMR", 3}};
-  const TextureRun* strip = nullptr;
-  const TextureRun* grouped = nullptr;
-  for (const TextureRun& run : runs) {
-    if (run.raster != raster) continue;
-    if (run.order == "strip") strip = &run;
-    if (run.order == "texgroup") grouped = &run;
-  }
-  if (!strip || !grouped) return table;
-  for (const SweepRow& a : strip->sweep.rows) {
-    if (a.layout != layout || a.cache.policy != policy) continue;
-    for (const SweepRow& b : grouped->sweep.rows) {
-      if (b.layout != a.layout || b.cache.policy != policy || b.cache.size_bytes != a.cache.size_bytes ||
-          b.cache.line_bytes != a.cache.line_bytes || b.cache.assoc != a.cache.assoc)
-        continue;
-      const double reduction =
-          a.stats.misses ? 100.0 * (double(a.stats.misses) - double(b.stats.misses)) / double(a.stats.misses) : 0.0;
-      table.add_row({a.cache.size_bytes, a.stats.misses, b.stats.misses, reduction, strip->vertex.acmr(),
-                     grouped->vertex.acmr()});
-    }
-  }
-  return table;
-}
-
-void run_report(const ReportCommand& command) {
-  namespace fs = std::filesystem;
-  const fs::path dir = command.output_dir;
-  fs::create_directories(dir / "plots");
-  std::ostringstream md;
-  md << "# rastrace report: " << command.scene << "\n\n"
-     << "How the order in which triangles are drawn changes the traffic between the GPU and its memory:\n"
-     << "the post-transform vertex cache under each ordering, then the texture cache under the orderings\n"
-     << "of Yang, Mitra and Huang (strips against texture-grouped strips) and Sander et al.'s Tipsy.\n\n"
-     << "Reproduce with:\n\n```sh\nrastrace report " << command.scene << " -o " << command.output_dir << "\n```\n\n";
-
-  // 1. The vertex cache under each ordering.
-  std::cerr << "report: vertex cache orderings\n";
-  const Mesh mesh = load_mesh_spec(command.scene);
-  VcacheTableSpec vcache;
-  vcache.algorithms = command.vcache_orders;
-  vcache.caches = {12, 16, 24, 32};
-  vcache.with_time = false;
-  md << render_table(vcache_table(mesh, command.scene, vcache), TableFormat::Markdown) << "\n";
-
-  // 2. The texture cache under the chosen orderings, scanline and tiled traversal.
-  std::cerr << "report: rendering and sweeping texture caches\n";
-  TextureExperiment experiment;
-  experiment.title = "Texture cache: " + command.scene;
-  experiment.render.scene = command.scene;
-  experiment.render.cull = "back";
-  experiment.orders = split_list(command.orders, "--order");
-  experiment.rasters = {"scanline", "tiled8"};
-  experiment.vertex_cache = VertexCacheSpec{VertexCachePolicy::Fifo, 16};
-  experiment.sweep = sweep_spec_from(command.sweep);
-  experiment.trace_dir = (dir / "traces").string();
-  experiment.image_dir = (dir / "images").string();
-  const std::vector<TextureRun> runs = run_texture_experiment(experiment);
-
-  md << "## Frames\n\n";
-  for (const TextureRun& run : runs)
-    if (run.raster == "scanline") md << "![" << run.order << "](" << fs::relative(run.image_path, dir).string() << ") ";
-  md << "\n\nOne frame per ordering (scanline traversal); the images are identical, the memory traffic is not.\n\n";
-
-  // Plots: miss rate against size, a line per ordering and policy, per traversal and layout.
-  for (const std::string& raster : experiment.rasters) {
-    for (const LayoutSpec& layout : experiment.sweep.layouts) {
-      PlotSeries series;
-      for (const TextureRun& run : runs) {
-        if (run.raster != raster) continue;
-        for (const SweepRow& row : run.sweep.rows)
-          if (row.layout == layout_name(layout))
-            series[run.order + " " + to_string(row.cache.policy)].emplace_back(row.cache.size_bytes,
-                                                                               row.stats.miss_rate());
-      }
-      const std::string name = "texture-" + raster + "-" + layout_name(layout) + ".png";
-      write_size_plot((dir / "plots" / name).string(),
-                      "texture miss rate: " + command.scene + ", " + raster + ", " + layout_name(layout),
-                      "texture miss rate", std::move(series));
-      if (raster == "scanline") md << "![" << name << "](plots/" << name << ")\n";
-    }
-  }
-  md << "\n";
-  for (const LayoutSpec& layout : experiment.sweep.layouts)
-    md << render_table(grouping_table(runs, "scanline", layout_name(layout), ReplacementPolicy::Lru),
-                       TableFormat::Markdown)
-       << "\n";
-  md << render_table(texture_experiment_table(experiment, runs), TableFormat::Markdown) << "\n"
-     << "Traces of every run are in `traces/`; `rastrace sweep traces/<order>-<raster>.rtrace` replays them "
-        "under any other cache.\n";
-
-  write_output((dir / "report.md").string(), md.str());
-  std::cout << "wrote " << (dir / "report.md").string() << "\n";
-}
-
 }  // namespace
 
 void add_report_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "report", "The main job: vertex and texture cache experiments on one scene, written to DIR/report.md");
   auto c = std::make_shared<ReportCommand>();
-  command->add_option("scene", c->scene, "Scene: builtin:bunny|spider|grid, a JSON scene or a mesh file")
+  ReportSpec& spec = c->spec;
+  command->add_option("scene", spec.scene, "Scene: builtin:bunny|spider|grid, a JSON scene or a mesh file")
       ->capture_default_str();
-  command->add_option("-o,--output", c->output_dir, "Folder for report.md, plots/, images/ and traces/")
+  command->add_option("-o,--output", spec.output_dir, "Folder for report.md, plots/, images/ and traces/")
       ->capture_default_str();
-  command->add_option("--order", c->orders, "Orderings whose texture traffic is measured")->capture_default_str();
-  command->add_option("--vcache-order", c->vcache_orders, "Orderings in the vertex cache table")->capture_default_str();
+  command->add_option("--order", spec.orders, "Orderings whose texture traffic is measured")->capture_default_str();
+  command->add_option("--vcache-order", spec.vcache_orders, "Orderings in the vertex cache table")
+      ->capture_default_str();
   add_sweep_flags(*command, c->sweep);
   command->footer(
       "Examples:\n"
       "  rastrace report                       # builtin:bunny into out/\n"
       "  rastrace report builtin:spider -o out/spider --layout block4 --policy lru,opt");
-  command->callback([c] { run_report(*c); });
+  command->callback([c] {
+    ReportSpec report = c->spec;
+    report.sweep = sweep_spec_from(c->sweep);
+    write_report(report);
+  });
 }
 
 }  // namespace rastrace

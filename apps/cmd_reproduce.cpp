@@ -1,11 +1,11 @@
 // `rastrace reproduce [--paper all|castano,hoppe,yang,yang-texture,sander,forsyth] [--local-iterations N]
 //  [--format md|csv|latex|json] [-o FILE]`: every published figure of REFERENCE.md beside ours,
-// measured now, with the difference (apps/reproduce.h).
+// measured now, with the difference (experiments/reproduce/reproduce.h).
 #include <memory>
 
-#include "apps/cache_report.h"
 #include "apps/commands.h"
-#include "apps/reproduce.h"
+#include "experiments/cache_report.h"
+#include "experiments/reproduce/reproduce.h"
 
 namespace rastrace {
 

@@ -4,11 +4,11 @@
 #include <iostream>
 #include <memory>
 
-#include "apps/cache_report.h"
 #include "apps/commands.h"
 #include "apps/sweep_flags.h"
 #include "core/error.h"
 #include "core/units.h"
+#include "experiments/cache_report.h"
 
 namespace rastrace {
 

@@ -9,12 +9,13 @@
 #include <memory>
 #include <set>
 
-#include "apps/cache_report.h"
 #include "apps/commands.h"
+#include "apps/render_flags.h"
 #include "apps/sweep_flags.h"
-#include "apps/texture_experiment.h"
 #include "core/error.h"
 #include "core/units.h"
+#include "experiments/cache_report.h"
+#include "experiments/texture_experiment.h"
 
 namespace rastrace {
 

@@ -8,9 +8,9 @@
 #include <memory>
 
 #include "apps/commands.h"
-#include "apps/mesh_spec.h"
-#include "apps/vcache_table.h"
 #include "core/error.h"
+#include "experiments/vcache_table.h"
+#include "scenes/mesh_spec.h"
 
 namespace rastrace {
 

@@ -45,4 +45,15 @@ RenderResult render_scene(const Scene& scene, const RenderOptions& options, Even
   return result;
 }
 
+TextureLevels texture_levels(const Scene& scene) {
+  TextureLevels levels;
+  for (const Texture& texture : scene.textures) {
+    std::vector<LevelSize> sizes;
+    for (const Image& image : texture.levels)
+      sizes.push_back(LevelSize{static_cast<std::uint32_t>(image.width), static_cast<std::uint32_t>(image.height)});
+    levels.push_back(std::move(sizes));
+  }
+  return levels;
+}
+
 }  // namespace rastrace

@@ -13,6 +13,7 @@
 #include "raster/framebuffer.h"
 #include "scenes/scene.h"
 #include "traces/sink.h"
+#include "traces/trace_metadata.h"
 
 namespace rastrace {
 
@@ -40,5 +41,9 @@ struct RenderResult {
 
 // Throws InputError for an invalid scene (indices, materials, textures out of range).
 RenderResult render_scene(const Scene& scene, const RenderOptions& options, EventSink* sink);
+
+// Every texture's level sizes, as render_scene's texel accesses address them: what the trace
+// metadata records and a live cache bank lays out in memory.
+TextureLevels texture_levels(const Scene& scene);
 
 }  // namespace rastrace

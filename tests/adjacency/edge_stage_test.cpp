@@ -1,10 +1,14 @@
+#include <algorithm>
+#include <cmath>
 #include <map>
 
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "adjacency_fixture.h"
 #include "cache_sim/vertex_cache.h"
-#include "edge_stage_support.h"
+#include "experiments/adjacency_experiment.h"
 #include "reorder/adjacency_order.h"
 #include "reorder/mesh_topology.h"
 #include "scenes/procedural.h"
@@ -12,8 +16,12 @@
 namespace rastrace {
 namespace {
 
-using testing::draw_edges;
-using testing::frame_mesh;
+// The edge stage with every processed edge and face kept.
+EdgeStageOptions recording() {
+  EdgeStageOptions options;
+  options.record = true;
+  return options;
+}
 
 TEST(EdgeStage, ProcessesEveryFaceAndEveryEdgeOfBunnyExactlyOnce) {
   const auto& built = testing::built_mesh("bunny00.off");
@@ -21,7 +29,7 @@ TEST(EdgeStage, ProcessesEveryFaceAndEveryEdgeOfBunnyExactlyOnce) {
   const AdjacencyPrimitives ordered = permute_primitives(
       built.build.primitives, order_adjacency(AdjacencyOrder::Fast, mesh, built.build.primitives, 24));
   const auto camera = frame_mesh(mesh, {0.3f, 0.2f, 1.0f}, 1.0f);
-  const auto result = draw_edges(mesh, ordered.indices, camera, nullptr, 24, true);
+  const auto result = draw_edge_stage(mesh, ordered.indices, camera, recording(), 24, nullptr);
 
   EXPECT_EQ(result.edges.primitives, ordered.size());
   EXPECT_EQ(result.edges.faces(), mesh.face_count());
@@ -54,7 +62,7 @@ TEST(EdgeStage, SilhouetteAndSharpEdgesMatchABruteForceOverAllFaces) {
   const auto& built = testing::built_mesh("fandisk.off");
   const Mesh& mesh = built.mesh;
   const auto camera = frame_mesh(mesh, {1.0f, 0.5f, 0.7f}, 1.0f);
-  const auto result = draw_edges(mesh, built.build.primitives.indices, camera, nullptr, 24, true);
+  const auto result = draw_edge_stage(mesh, built.build.primitives.indices, camera, recording(), 24, nullptr);
 
   // Brute force: facing of every face from its eye-space normal against the eye direction.
   const MeshTopology topology = build_mesh_topology(mesh);
@@ -90,7 +98,7 @@ TEST(EdgeStage, GridBoundaryIsDrawnAsLinesAndRejectsOtherPrimitives) {
   const auto camera = frame_mesh(mesh, {0.0f, 0.0f, 1.0f}, 1.0f);
   Framebuffer lines(128, 128);
   lines.clear(glm::vec4(0.0f));
-  const auto result = draw_edges(mesh, build.primitives.indices, camera, &lines);
+  const auto result = draw_edge_stage(mesh, build.primitives.indices, camera, {}, 24, &lines);
   EXPECT_EQ(result.edges.boundary_edges, 32u);
   EXPECT_EQ(result.edges.silhouette_edges, 0u);  // a flat grid seen from the front
   EXPECT_EQ(result.edges.lines_drawn, 32u);

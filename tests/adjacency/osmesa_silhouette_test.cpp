@@ -19,7 +19,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "adjacency_fixture.h"
-#include "edge_stage_support.h"
+#include "experiments/adjacency_experiment.h"
 #include "reorder/adjacency_order.h"
 
 namespace rastrace {
@@ -255,11 +255,11 @@ TEST(OsmesaCrossCheck, GeometryShaderSilhouetteOfBunnyMatchesTheEdgeStage) {
   const Mesh& mesh = built.mesh;
   const AdjacencyPrimitives ordered = permute_primitives(
       built.build.primitives, order_adjacency(AdjacencyOrder::Careful, mesh, built.build.primitives, 24));
-  const auto camera = testing::frame_mesh(mesh, {0.3f, 0.2f, 1.0f}, 1.0f);
+  const auto camera = frame_mesh(mesh, {0.3f, 0.2f, 1.0f}, 1.0f);
 
   Framebuffer lines(kSize, kSize);
   lines.clear(glm::vec4(0.0f));
-  const auto ours = testing::draw_edges(mesh, ordered.indices, camera, &lines);
+  const auto ours = draw_edge_stage(mesh, ordered.indices, camera, {}, 24, &lines);
   std::vector<std::uint8_t> mine(std::size_t(kSize) * kSize);
   for (std::size_t i = 0; i < mine.size(); ++i) mine[i] = lines.colour()[4 * i] > 127;
 

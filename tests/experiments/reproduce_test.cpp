@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "apps/reproduce.h"
 #include "core/error.h"
+#include "experiments/reproduce/reproduce.h"
 #include "support/run_rastrace.h"
 
 namespace rastrace {

@@ -9,10 +9,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "apps/texture_experiment.h"
+#include "experiments/texture_experiment.h"
 #include "support/run_rastrace.h"
 #include "support/temp_dir.h"
 #include "support/test_data.h"
+#include "traces/trace_reader.h"
 
 namespace rastrace {
 namespace {
@@ -110,6 +111,36 @@ TEST(TextureExperiment, ASceneWithoutTexturesIsAClearError) {
   } catch (const std::exception& e) {
     EXPECT_NE(std::string(e.what()).find("has no texture"), std::string::npos) << e.what();
   }
+}
+
+// One metadata builder: a texsweep or report trace states the same settings, cull, lod and
+// lighting included, as `rastrace render --trace` of the same frame.
+TEST(TextureExperiment, TracesCarryTheSameMetadataAsRenderTraces) {
+  const std::string dir = temporary_dir("metadata");
+  const testing::CommandRun rendered =
+      testing::run_rastrace("render builtin:grid --order strip --cull back --raster tiled8 -o " + dir +
+                            "/frame.png --trace " + dir + "/render.rtrace");
+  ASSERT_EQ(rendered.status, 0) << rendered.out;
+
+  TextureExperiment experiment;
+  experiment.render.scene = "builtin:grid";
+  experiment.render.cull = "back";
+  experiment.orders = {"strip"};
+  experiment.rasters = {"tiled8"};
+  experiment.vertex_cache = VertexCacheSpec{VertexCachePolicy::Fifo, 16};
+  experiment.sweep.sizes = {1024};
+  experiment.trace_dir = dir + "/texsweep";
+  const std::vector<TextureRun> runs = run_texture_experiment(experiment);
+  ASSERT_EQ(runs.size(), 1u);
+
+  const TraceMetadata from_render = TraceReader(dir + "/render.rtrace").metadata();
+  const TraceMetadata from_experiment = TraceReader(runs[0].trace_path).metadata();
+  EXPECT_EQ(from_experiment, from_render);
+  EXPECT_EQ(from_experiment.extra.at("cull"), "back");
+  EXPECT_EQ(from_experiment.extra.at("lod"), "lengths");
+  EXPECT_EQ(from_experiment.extra.at("lighting"), "off");
+  EXPECT_EQ(from_experiment.extra.at("raster"), "tiled8");
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // Yang, Mitra, Huang, Table 1: vertices sent by generalized triangle strips (Evans et al.), swaps
 // included. CGAL's triceratops is the paper's model (2,832 vertices, 5,660 triangles); the other
 // models are not available here.
-#include "apps/reproduce.h"
+#include "experiments/reproduce/reproduce.h"
 #include "reorder/ordering.h"
 #include "reorder/strip.h"
 #include "scenes/mesh_io.h"

@@ -4,8 +4,8 @@
 // fandisk is split at creases (7,233 vertices against CGAL's 6,475) and CGAL's bunny00 is not his.
 #include <cstdio>
 
-#include "apps/reproduce.h"
 #include "cache_sim/vertex_cache.h"
+#include "experiments/reproduce/reproduce.h"
 #include "reorder/ordering.h"
 #include "scenes/mesh_io.h"
 #include "scenes/procedural.h"

@@ -11,9 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "apps/render_wiring.h"
+#include "cache_sim/live_bank_sink.h"
 #include "cache_sim/sweep.h"
 #include "core/table.h"
+#include "experiments/render_settings.h"
 
 namespace rastrace {
 

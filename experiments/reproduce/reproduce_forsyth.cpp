@@ -2,8 +2,8 @@
 // reach about 0.65 vertices per drawn triangle. Ours: his linear-speed optimizer (reorder/forsyth)
 // on the CGAL meshes, FIFO 16. And the figures of Sander, Nehab, Barczak 2007 (Tipsy) as cited,
 // on a dragon we do not have.
-#include "apps/reproduce.h"
 #include "cache_sim/vertex_cache.h"
+#include "experiments/reproduce/reproduce.h"
 #include "reorder/ordering.h"
 #include "scenes/mesh_io.h"
 

@@ -2,9 +2,9 @@
 // order made for 8 and run on 16, and the W + 2 minimum cache. His numbers were counted by NVIDIA
 // Mesh Tools (cache_sim/eviction_charged.h), so ours are counted the same way; the note gives the
 // strict FIFO count where it differs.
-#include "apps/reproduce.h"
 #include "cache_sim/eviction_charged.h"
 #include "cache_sim/vertex_cache.h"
+#include "experiments/reproduce/reproduce.h"
 #include "reorder/ordering.h"
 #include "scenes/procedural.h"
 

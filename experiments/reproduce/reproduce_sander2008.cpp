@@ -3,8 +3,8 @@
 // both baselines: kcache on the cover faces, and kcache on the whole mesh (baseline-mesh). The paper's fandisk has
 // 9,926 faces and its bunny 69,473; CGAL's copies have 12,946 and 75,408, so the rows compare like for like only in
 // spirit.
-#include "apps/reproduce.h"
 #include "cache_sim/vertex_cache.h"
+#include "experiments/reproduce/reproduce.h"
 #include "reorder/adjacency_bound.h"
 #include "reorder/adjacency_build.h"
 #include "reorder/adjacency_order.h"

@@ -1,5 +1,5 @@
 // Yang, Mitra, Huang's texture-cache findings (REFERENCE.md), measured by the texture experiment
-// (apps/texture_experiment.h) exactly as `rastrace texsweep --experiment fig9` / `fig11` run it,
+// (experiments/texture_experiment.h) exactly as `rastrace texsweep --experiment fig9` / `fig11` run it,
 // with scanline traversal, a linear layout, 64-byte lines and a fully associative cache:
 // - four-colour bunny: texture-grouped strips have 10-15% fewer texture misses than strips
 //   (LRU, 1-16 KiB), at about 1% more vertex-cache cost;
@@ -10,10 +10,9 @@
 // midpoint, the note the paper's words.
 #include <map>
 
-#include "apps/reproduce.h"
-#include "apps/sweep_flags.h"
-#include "apps/texture_experiment.h"
 #include "core/units.h"
+#include "experiments/reproduce/reproduce.h"
+#include "experiments/texture_experiment.h"
 
 namespace rastrace {
 
@@ -25,15 +24,18 @@ struct Misses {
   std::map<std::string, double> acmr;
 };
 
-Misses run_experiment(const std::string& scene, const std::string& policies) {
+Misses run_experiment(const std::string& scene, const std::vector<ReplacementPolicy>& policies) {
   TextureExperiment experiment;
   experiment.render.scene = scene;
   experiment.render.cull = "back";
   experiment.orders = {"strip", "texgroup"};
   experiment.rasters = {"scanline"};
-  experiment.vertex_cache = parse_vcache_spec("fifo:16");
-  experiment.sweep = sweep_spec_from(
-      SweepFlags{.sizes = "1KiB..16KiB", .lines = "64B", .assocs = "full", .policies = policies, .layouts = "linear"});
+  experiment.vertex_cache = VertexCacheSpec{VertexCachePolicy::Fifo, 16};
+  experiment.sweep.sizes = {1024, 2048, 4096, 8192, 16384};  // 1 KiB .. 16 KiB
+  experiment.sweep.lines = {64};
+  experiment.sweep.assocs = {0};  // fully associative
+  experiment.sweep.policies = policies;
+  experiment.sweep.layouts = {LayoutSpec{}};  // linear, 4-byte texels, 4 KiB alignment
   Misses misses;
   for (const TextureRun& run : run_texture_experiment(experiment)) {
     misses.acmr[run.order] = run.vertex.acmr();
@@ -63,8 +65,8 @@ double mean_percent(const std::map<std::uint64_t, std::uint64_t>& more,
 
 std::vector<ReproducedFigure> reproduce_yang_texture() {
   const std::string paper = "Yang et al.";
-  const Misses bunny = run_experiment("builtin:bunny", "fifo,lru");
-  const Misses spider = run_experiment("builtin:spider", "lru");
+  const Misses bunny = run_experiment("builtin:bunny", {ReplacementPolicy::Fifo, ReplacementPolicy::Lru});
+  const Misses spider = run_experiment("builtin:spider", {ReplacementPolicy::Lru});
   const auto strip_lru = std::pair{std::string("strip"), ReplacementPolicy::Lru};
   const auto grouped_lru = std::pair{std::string("texgroup"), ReplacementPolicy::Lru};
   const auto strip_fifo = std::pair{std::string("strip"), ReplacementPolicy::Fifo};

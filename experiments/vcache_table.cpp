@@ -1,4 +1,4 @@
-#include "apps/vcache_table.h"
+#include "experiments/vcache_table.h"
 
 #include <chrono>
 #include <map>

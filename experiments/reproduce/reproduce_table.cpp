@@ -3,8 +3,8 @@
 #include <filesystem>
 #include <sstream>
 
-#include "apps/reproduce.h"
 #include "core/error.h"
+#include "experiments/reproduce/reproduce.h"
 #include "scenes/scene_io.h"
 
 namespace rastrace {

@@ -1,4 +1,4 @@
-#include "apps/texture_experiment.h"
+#include "experiments/texture_experiment.h"
 
 #include <filesystem>
 
@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/units.h"
+#include "pipeline/scene_order.h"
 #include "traces/trace_writer.h"
 
 namespace rastrace {
@@ -86,14 +87,7 @@ std::vector<TextureRun> run_texture_experiment(const TextureExperiment& experime
       run.raster = raster;
       run.vertex = vertex;
       run.trace_path = (std::filesystem::path(trace_dir) / (order + "-" + raster + ".rtrace")).string();
-      TraceMetadata metadata;
-      metadata.scene = flags.scene;
-      metadata.ordering = order;
-      metadata.width = static_cast<std::uint32_t>(scene.width);
-      metadata.height = static_cast<std::uint32_t>(scene.height);
-      metadata.filter = flags.filter;
-      metadata.textures = levels;
-      metadata.extra = {{"raster", raster}, {"wrap", flags.wrap}};
+      TraceMetadata metadata = render_trace_metadata(flags, scene, levels);
       if (order == "texgroup")
         metadata.extra.insert(
             {{"texgroup_base", experiment.texgroup_base}, {"texgroup_regions", experiment.texgroup_regions}});

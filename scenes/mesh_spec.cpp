@@ -1,4 +1,4 @@
-#include "apps/mesh_spec.h"
+#include "scenes/mesh_spec.h"
 
 #include <charconv>
 

@@ -1,4 +1,4 @@
-#include "apps/cache_report.h"
+#include "experiments/cache_report.h"
 
 #include <cstdio>
 #include <filesystem>

@@ -1,0 +1,22 @@
+// Flag parsing shared by `rastrace render`, `compare` and `texsweep`: the scene render flags
+// (experiments/render_settings.h holds what they mean) and the command-line cache specs.
+#pragma once
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "cache_sim/cache_config.h"
+#include "cache_sim/live_bank_sink.h"
+#include "experiments/render_settings.h"
+
+namespace rastrace {
+
+void add_scene_render_flags(CLI::App& command, SceneRenderFlags& flags);
+
+// "fifo:16" / "lru:32".
+VertexCacheSpec parse_vcache_spec(const std::string& text);
+// "16KiB,64B,4way,lru": size, line size, associativity (Nway, direct, full), policy.
+CacheConfig parse_tcache_spec(const std::string& text);
+
+}  // namespace rastrace

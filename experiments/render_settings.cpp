@@ -1,0 +1,60 @@
+#include "experiments/render_settings.h"
+
+#include <cstdio>
+
+#include "core/error.h"
+#include "raster/rasterizer.h"
+#include "raster/sampler.h"
+#include "scenes/scene_io.h"
+
+namespace rastrace {
+
+Scene load_render_scene(const SceneRenderFlags& flags) {
+  Scene scene = load_scene(flags.scene);
+  if (!flags.size.empty()) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(flags.size.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || x != 'x' || w < 1 || h < 1 ||
+        w > 16384 || h > 16384)
+      throw InputError("--size '" + flags.size + "': expected WxH with 1..16384 pixels on each side, e.g. 1024x768");
+    scene.width = w;
+    scene.height = h;
+  }
+  return scene;
+}
+
+RenderOptions render_options_from(const SceneRenderFlags& flags) {
+  RenderOptions options;
+  SamplerState& sampler = options.pipeline.raster.sampler;
+  sampler = parse_filter(flags.filter);
+  sampler.wrap_s = sampler.wrap_t = parse_wrap(flags.wrap);
+  if (flags.lod == "lengths")
+    sampler.lod = LodFormula::Lengths;
+  else if (flags.lod == "max_component")
+    sampler.lod = LodFormula::MaxComponent;
+  else
+    throw InputError("--lod '" + flags.lod + "': expected lengths or max_component");
+  options.pipeline.raster.traversal = parse_traversal(flags.raster);
+  options.pipeline.cull = parse_cull_mode(flags.cull);
+  options.pipeline.lighting.enabled = flags.lighting;
+  options.pipeline.lighting.direction = glm::vec3(0.3f, 0.5f, 1.0f);
+  return options;
+}
+
+TraceMetadata render_trace_metadata(const SceneRenderFlags& flags, const Scene& scene, const TextureLevels& levels) {
+  TraceMetadata metadata;
+  metadata.scene = flags.scene;
+  metadata.ordering = flags.order;
+  metadata.width = static_cast<std::uint32_t>(scene.width);
+  metadata.height = static_cast<std::uint32_t>(scene.height);
+  metadata.filter = flags.filter;
+  metadata.textures = levels;
+  metadata.extra = {{"raster", flags.raster},
+                    {"wrap", flags.wrap},
+                    {"lod", flags.lod},
+                    {"cull", flags.cull},
+                    {"lighting", flags.lighting ? "on" : "off"}};
+  return metadata;
+}
+
+}  // namespace rastrace

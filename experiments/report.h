@@ -1,0 +1,27 @@
+// `rastrace report`, the main job: a compact version of every experiment on one scene. It renders
+// the frame, compares the vertex cache under each ordering, renders the chosen orderings with
+// scanline and tiled traversal, records their texel traces, sweeps texture caches over them
+// (sizes, FIFO/LRU/OPT, layouts) and writes DIR/report.md with the tables, the plots (DIR/plots)
+// and the frames (DIR/images). Everything in it is deterministic: running the same report again
+// writes the same bytes.
+#pragma once
+
+#include <string>
+
+#include "cache_sim/sweep.h"
+
+namespace rastrace {
+
+struct ReportSpec {
+  std::string scene = "builtin:bunny";
+  std::string output_dir = "out";
+  std::string orders = "strip,texgroup,tipsy";  // orderings whose texture traffic is measured
+  std::string vcache_orders = "original,scanline,morton,hilbert,strip,forsyth,tipsy,kcache,greedy,texgroup";
+  SweepSpec sweep;  // the texture caches swept over every trace
+};
+
+// Writes DIR/report.md, DIR/plots, DIR/images and DIR/traces, and prints the report's path on
+// stdout. Throws InputError for an unknown scene or ordering.
+void write_report(const ReportSpec& spec);
+
+}  // namespace rastrace
