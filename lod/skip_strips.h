@@ -28,7 +28,7 @@ struct LevelParams {
   PrimitiveType primitive = PrimitiveType::TriangleStrip;
   // The ordering of each level (reorder/ordering.h): a strip algorithm ("strip", "greedy") for
   // strips, a list one ("tipsy", "forsyth", ...) for lists.
-  std::string algorithm = "strip";
+  std::string algorithm = "greedy";
   ReorderParams reorder;
   // A new level starts when the triangles binned in the level reach this fraction of its triangles.
   double new_level_fraction = 0.5;

@@ -19,7 +19,7 @@ namespace rastrace {
 
 struct VipmMethodsParams {
   VipmBuildParams build;
-  std::string strip_algorithm = "strip";  // skip strips and mixed-mode as strips
+  std::string strip_algorithm = "greedy";  // skip strips and mixed-mode as strips (Hoppe 1999: cache-aware)
   std::string list_algorithm = "tipsy";   // skip strips and mixed-mode as lists, sliding window's middle
   ReorderParams reorder;
   double new_level_fraction = 0.5;  // multilevel: degenerates (binned triangles) per level triangle

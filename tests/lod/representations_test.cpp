@@ -121,3 +121,28 @@ TEST(VipmRepresentations, VanillaRecordsHaveForsythsLayoutBelow65536Vertices) {
 
 }  // namespace
 }  // namespace rastrace
+
+namespace rastrace {
+namespace {
+
+TEST(VipmRepresentations, From65536VerticesIndicesAndRecordsAre32Bit) {
+  const testing::TestPm t = testing::test_progressive_mesh(make_grid(256, 256), 40);
+  ASSERT_EQ(t.pm.vertex_order.size(), 257u * 257u);
+  auto vanilla = build_vanilla(t.pm);
+  EXPECT_EQ(vanilla->index_bytes(), 4u);
+  EXPECT_EQ(vanilla->layout(), "kept 32-bit, counts 8-bit, offsets 32-bit, 8-byte header");
+  std::uint64_t expected = 8;
+  for (const CollapseRecord& c : t.pm.collapses) expected += 8 + 4 * c.changed_corners.size();
+  EXPECT_EQ(vanilla->memory().record_bytes, expected);
+  EXPECT_EQ(vanilla->memory().index_list_bytes, 2u * 256u * 256u * 3u * 4u);
+  auto window = build_sliding_window(t.pm, t.vertices);
+  EXPECT_EQ(window->record_bytes(), 12u);  // 131,072 triangles do not fit Forsyth's 16-bit count
+  for (std::uint32_t n : {0u, 17u, 40u}) {
+    vanilla->set_lod(n);
+    window->set_lod(n);
+    EXPECT_EQ(drawn_triangles(*window), drawn_triangles(*vanilla)) << n;
+  }
+}
+
+}  // namespace
+}  // namespace rastrace
