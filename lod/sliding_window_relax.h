@@ -29,7 +29,9 @@ struct RelaxedOrder {
   std::uint32_t out_of_order = 0;  // collapses done before one that precedes them in the input
 };
 
-// tolerance >= 0 (0.1 is Forsyth's sample code); throws InputError otherwise.
+// tolerance >= 0 (0.1 is Forsyth's sample code; 0 still lets a collapse of equal or lower error go
+// first, which a builder's order has when errors tie or drop after neighbouring collapses); throws
+// InputError otherwise.
 RelaxedOrder relax_for_sliding_window(const ProgressiveMesh& pm, double tolerance = 0.1);
 
 }  // namespace rastrace

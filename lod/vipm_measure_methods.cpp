@@ -22,6 +22,7 @@ VipmMethods build_vipm_methods(const ProgressiveMesh& pm, const Mesh& vertices, 
   out.representations.push_back(build_mixed_mode(pm, vertices, strips, params.build));
   out.representations.push_back(build_mixed_mode(pm, vertices, lists, params.build));
   out.sliding_window_strict_levels = static_cast<std::uint32_t>(sliding_window_level_starts(pm).size());
+  out.sliding_window_levels_tolerance_0 = relax_for_sliding_window(pm, 0.0).levels;
   out.sliding_window_order = relax_for_sliding_window(pm, params.tolerance);
   Mesh relaxed_vertices;
   relaxed_vertices.name = vertices.name;

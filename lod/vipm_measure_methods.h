@@ -20,7 +20,7 @@ namespace rastrace {
 struct VipmMethodsParams {
   VipmBuildParams build;
   std::string strip_algorithm = "greedy";  // skip strips and mixed-mode as strips (Hoppe 1999: cache-aware)
-  std::string list_algorithm = "tipsy";   // skip strips and mixed-mode as lists, sliding window's middle
+  std::string list_algorithm = "tipsy";    // skip strips and mixed-mode as lists, sliding window's middle
   ReorderParams reorder;
   double new_level_fraction = 0.5;  // multilevel: degenerates (binned triangles) per level triangle
   double tolerance = 0.1;           // sliding window: of the mean collapse error
@@ -29,7 +29,8 @@ struct VipmMethodsParams {
 struct VipmMethods {
   std::vector<std::unique_ptr<VipmRepresentation>> representations;
   RelaxedOrder sliding_window_order;
-  std::uint32_t sliding_window_strict_levels = 0;  // levels in the builder's own order
+  std::uint32_t sliding_window_strict_levels = 0;       // levels in the builder's own order
+  std::uint32_t sliding_window_levels_tolerance_0 = 0;  // relaxed with tolerance 0 (equal or lower errors only)
 };
 
 // `vertices`: the vertex buffer in pm's numbering (reordered_mesh's result).
