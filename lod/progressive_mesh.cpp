@@ -68,6 +68,7 @@ class Builder {
       }
     alive_count_ = static_cast<std::uint32_t>(faces);
     stamp_.assign(n, 0);
+    refused_.assign(n, 0);
     build_quadrics();
   }
 
@@ -78,7 +79,10 @@ class Builder {
       const Candidate c = queue_.top();
       queue_.pop();
       if (stamp_[c.binned] != c.binned_stamp || stamp_[c.kept] != c.kept_stamp) continue;
-      if (!allowed(c.binned, c.kept)) continue;
+      if (!allowed(c.binned, c.kept)) {
+        refused_[c.binned] = refused_[c.kept] = 1;
+        continue;
+      }
       collapses.push_back(collapse(c.binned, c.kept, c.cost));
       refresh_around(c.kept);
     }
@@ -160,22 +164,23 @@ class Builder {
     }
   }
 
-  // After a collapse onto k, the collapses whose cost or checks may have changed are those that
-  // bin or keep k or a neighbour of k: stamp them stale and queue them again.
+  // After a collapse onto k, only the collapses that bin or keep k change cost (k's quadric
+  // grew): stamp k so its old entries go stale, and queue its edges again. The checks of a
+  // collapse near k may change too; a collapse that failed them is queued again once a
+  // collapse touches one of its two vertices (they are flagged `refused_`).
   void refresh_around(std::uint32_t k) {
-    ring(k, ring_b_);
-    touched_.clear();
-    touched_.push_back(k);
-    for (const auto& e : ring_b_) touched_.push_back(e.first);
-    for (const std::uint32_t v : touched_) ++stamp_[v];
-    for (const std::uint32_t v : touched_) {
-      ring(v, ring_a_);
-      for (const auto& [w, count] : ring_a_) {
-        push(v, w);
-        // w -> v once: from here unless w is itself touched (then w's own pass pushes it).
-        if (std::find(touched_.begin(), touched_.end(), w) == touched_.end()) push(w, v);
-      }
+    ++stamp_[k];
+    push_edges_of(k, /*both_directions=*/true);
+    refused_[k] = 0;
+    for (const auto& [w, count] : ring_a_)
+      if (refused_[w]) retry_.push_back(w);
+    for (const std::uint32_t w : retry_) {
+      refused_[w] = 0;
+      ring(w, ring_b_);
+      for (const auto& [x, c] : ring_b_)
+        if (x != k) push(w, x), push(x, w);
     }
+    retry_.clear();
   }
 
   // The checks of a half-edge collapse binned -> kept.
@@ -260,10 +265,11 @@ class Builder {
   std::vector<std::vector<std::uint32_t>> vertex_faces_;  // alive faces using each vertex
   std::vector<Quadric> quadrics_;
   std::vector<std::uint32_t> stamp_;
+  std::vector<std::uint8_t> refused_;  // a collapse binning or keeping this vertex was refused
   std::priority_queue<Candidate> queue_;
   // Scratch space reused by every check.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> ring_a_, ring_b_;
-  std::vector<std::uint32_t> opposite_, touched_;
+  std::vector<std::uint32_t> opposite_, retry_;
 };
 
 }  // namespace

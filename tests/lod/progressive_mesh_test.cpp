@@ -47,7 +47,7 @@ TEST(ProgressiveMesh, FandiskSampledLodsAreManifoldWithoutFlips) {
 
 TEST(ProgressiveMesh, Bunny00SampledLodsAreManifoldWithoutFlipsAndBuildInSeconds) {
   const Mesh mesh = load_mesh(testing::data_file("meshes/bunny00.off"));
-  // Processor time, not wall time: the machine may be shared. About 5 s in a Release build;
+  // Processor time, not wall time: the machine may be shared. About 1 s in a Release build;
   // the bound leaves room for the sanitizer build (minutes would mean a broken queue).
   const std::clock_t start = std::clock();
   const ProgressiveMesh pm = build_progressive_mesh(mesh, {});
