@@ -6,6 +6,7 @@ namespace rastrace {
 
 std::vector<std::array<std::uint32_t, 3>> meshopt_simplified_triangles(const Mesh& mesh,
                                                                        std::uint32_t target_triangles) {
+  if (mesh.indices.empty() || mesh.positions.empty()) return {};
   std::vector<unsigned int> out(mesh.indices.size());
   // target_error is relative to the mesh's extent: 1 places no limit on the error.
   const std::size_t count =

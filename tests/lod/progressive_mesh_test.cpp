@@ -5,6 +5,8 @@
 
 #include <ctime>
 
+#include <glm/geometric.hpp>
+
 #include <gtest/gtest.h>
 
 #include "core/error.h"
@@ -55,6 +57,29 @@ TEST(ProgressiveMesh, Bunny00SampledLodsAreManifoldWithoutFlipsAndBuildInSeconds
   EXPECT_LT(seconds, 60.0);
   EXPECT_LE(pm.triangle_counts.back(), 1508u);  // 2% of 75408
   testing::expect_valid_sequence(pm, reordered_mesh(mesh, pm).positions, 2999, mesh.name);
+}
+
+double area(const std::vector<std::array<std::uint32_t, 3>>& triangles, const std::vector<glm::vec3>& p) {
+  double sum = 0;
+  for (const auto& t : triangles) sum += 0.5 * glm::length(testing::normal_of(p, t[0], t[1], t[2]));
+  return sum;
+}
+
+TEST(ProgressiveMesh, BoundaryPlanesKeepAFlatGridsOutline) {
+  // Every face plane of a flat grid is the same plane: only the boundary planes stop its border
+  // from being eaten. With them, every collapse costs nothing and the square keeps its area.
+  const Mesh grid = make_grid(16, 16);
+  const ProgressiveMesh pm = build_progressive_mesh(grid, {});
+  const Mesh reordered = reordered_mesh(grid, pm);
+  const double full = area(pm.triangles, reordered.positions);
+  for (const std::size_t n : {pm.collapses.size() / 2, pm.collapses.size()})
+    EXPECT_NEAR(area(triangles_at_lod(pm, n), reordered.positions), full, 1e-9 * full) << "LoD " << n;
+  for (const CollapseRecord& c : pm.collapses) EXPECT_LE(c.error, 1e-9 * full * full);
+  // Without them (weight 0), the outline shrinks.
+  ProgressiveMeshParams none;
+  none.boundary_weight = 0;
+  const ProgressiveMesh eaten = build_progressive_mesh(grid, none);
+  EXPECT_LT(area(triangles_at_lod(eaten, eaten.collapses.size()), reordered_mesh(grid, eaten).positions), 0.99 * full);
 }
 
 TEST(ProgressiveMesh, DeterministicAndSeeded) {
