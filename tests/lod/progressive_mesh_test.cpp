@@ -4,6 +4,7 @@
 #include "lod/progressive_mesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <ctime>
 
 #include <glm/geometric.hpp>
@@ -181,6 +182,9 @@ TEST(ProgressiveMesh, BadInputIsAnInputError) {
   expect_input_error(triangles_mesh({0, 1, 2, 0, 1, 3}, 4), {}, "inconsistent winding");
   expect_input_error(triangles_mesh({0, 1, 1}, 3), {}, "repeats a vertex");
   expect_input_error(triangles_mesh({0, 1, 7}, 3), {}, "vertex index 7");
+  Mesh nan = triangles_mesh({0, 1, 2}, 3);
+  nan.positions[2].y = std::nanf("");
+  expect_input_error(nan, {}, "vertex 2 has a non-finite position");
   ProgressiveMeshParams big;
   big.min_triangles = 3;
   expect_input_error(triangles_mesh({0, 1, 2, 0, 2, 3}, 4), big, "--min-triangles 3");
