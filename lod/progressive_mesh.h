@@ -82,8 +82,9 @@ struct ProgressiveMesh {
 };
 
 // Builds the collapse sequence. Throws InputError (naming the mesh) for an empty mesh, an index
-// out of range, a degenerate or duplicated face, a non-manifold edge or vertex, inconsistent
-// winding, or min_triangles larger than the mesh's face count. Deterministic for a given seed.
+// out of range, a non-finite position, a face repeating a vertex, a non-manifold edge or vertex,
+// inconsistent winding, or min_triangles larger than the mesh's face count. Deterministic for a
+// given seed.
 ProgressiveMesh build_progressive_mesh(const Mesh& mesh, const ProgressiveMeshParams& params = {});
 
 // The source mesh with its vertex buffer (positions, normals, UVs) in the new numbering and its

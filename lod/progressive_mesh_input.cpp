@@ -1,6 +1,7 @@
 #include "lod/progressive_mesh_input.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -39,6 +40,11 @@ void check_manifold_input(const Mesh& mesh) {
       if (v[i] >= vertices)
         fail(mesh, "face " + std::to_string(f) + ": vertex index " + std::to_string(v[i]) + " >= vertex count " +
                        std::to_string(vertices));
+    for (int i = 0; i < 3; ++i) {
+      const glm::vec3& p = mesh.positions[v[i]];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        fail(mesh, "face " + std::to_string(f) + ": vertex " + std::to_string(v[i]) + " has a non-finite position");
+    }
     if (v[0] == v[1] || v[1] == v[2] || v[0] == v[2])
       fail(mesh, "face " + std::to_string(f) + " repeats a vertex (" + std::to_string(v[0]) + " " +
                      std::to_string(v[1]) + " " + std::to_string(v[2]) + ")");

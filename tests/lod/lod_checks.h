@@ -84,6 +84,10 @@ inline void expect_valid_sequence(const ProgressiveMesh& pm, const std::vector<g
   idx.resize(3 * pm.triangles.size());
   for (std::size_t t = 0; t < pm.triangles.size(); ++t)
     for (int i = 0; i < 3; ++i) idx[3 * t + i] = pm.triangles[t][i];
+  // vertex -> the drawn triangles using it, kept up to date from the index buffer's edits.
+  std::vector<std::vector<std::uint32_t>> uses(pm.vertex_order.size());
+  for (std::uint32_t t = 0; t < pm.triangles.size(); ++t)
+    for (const std::uint32_t v : pm.triangles[t]) uses[v].push_back(t);
   for (std::size_t n = 0; n < pm.lod_count(); ++n) {
     const std::string at = what + " LoD " + std::to_string(n);
     const std::uint32_t count = pm.triangle_count_at(n);
@@ -106,7 +110,8 @@ inline void expect_valid_sequence(const ProgressiveMesh& pm, const std::vector<g
     ASSERT_EQ(c.binned_triangles.size(), count - pm.triangle_count_at(n + 1)) << at;
     ASSERT_FALSE(c.binned_triangles.empty()) << at << ": no triangle on the edge kept-binned";
     std::vector<std::uint32_t> on_edge, changed;
-    for (std::uint32_t t = 0; t < count; ++t) {
+    std::sort(uses[c.binned].begin(), uses[c.binned].end());
+    for (const std::uint32_t t : uses[c.binned]) {
       const std::uint32_t* v = &idx[3 * t];
       const bool has_b = v[0] == c.binned || v[1] == c.binned || v[2] == c.binned;
       const bool has_k = v[0] == c.kept || v[1] == c.kept || v[2] == c.kept;
@@ -126,7 +131,12 @@ inline void expect_valid_sequence(const ProgressiveMesh& pm, const std::vector<g
       const glm::dvec3 after = normal_of(positions, v[0], v[1], v[2]);
       ASSERT_GT(glm::dot(before, after), 0.0) << at << ": triangle " << changed[i] << " flips";
     }
-    for (const std::uint32_t t : c.binned_triangles) ASSERT_GE(t, pm.triangle_count_at(n + 1)) << at;
+    for (const std::uint32_t t : c.binned_triangles) {
+      ASSERT_GE(t, pm.triangle_count_at(n + 1)) << at;
+      for (int i = 0; i < 3; ++i) std::erase(uses[idx[3 * t + i]], t);
+    }
+    for (const std::uint32_t t : changed) uses[c.kept].push_back(t);
+    uses[c.binned].clear();
     ASSERT_TRUE(cursor.collapse());
   }
   // And back up: splits restore full detail exactly.

@@ -3,6 +3,8 @@
 // the vanilla numbering, determinism and seeding, speed, and bad input.
 #include "lod/progressive_mesh.h"
 
+#include <algorithm>
+#include <cmath>
 #include <ctime>
 
 #include <glm/geometric.hpp>
@@ -109,6 +111,40 @@ TEST(ProgressiveMesh, ErrorsGrowOnAverage) {
   EXPECT_GT(last, 100 * first);
 }
 
+TEST(ProgressiveMesh, CursorJumpsMatchTheReference) {
+  const Mesh mesh = load_mesh(testing::data_file("meshes/fandisk.off"));
+  const ProgressiveMesh pm = build_progressive_mesh(mesh, {});
+  ProgressiveMeshCursor cursor(pm);
+  for (const std::size_t n :
+       {std::size_t(5000), std::size_t(17), pm.collapses.size() + 9, std::size_t(3000), std::size_t(0)}) {
+    cursor.set_lod(n);
+    const std::size_t at = std::min(n, pm.collapses.size());
+    ASSERT_EQ(cursor.lod(), at);
+    const auto reference = triangles_at_lod(pm, at);
+    ASSERT_EQ(cursor.indices().size(), 3 * reference.size());
+    for (std::size_t t = 0; t < reference.size(); ++t)
+      ASSERT_TRUE(std::equal(reference[t].begin(), reference[t].end(), cursor.indices().begin() + 3 * t)) << n;
+    EXPECT_EQ(cursor.vertex_count(), pm.vertex_count_at(at));
+  }
+  EXPECT_FALSE(cursor.split());
+}
+
+TEST(ProgressiveMesh, ReorderedMeshKeepsEveryVertexAndFace) {
+  Mesh mesh = load_mesh(testing::data_file("meshes/triceratops.off"));
+  mesh.face_material.resize(mesh.face_count());
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) mesh.face_material[f] = std::uint32_t(f % 3);
+  const ProgressiveMesh pm = build_progressive_mesh(mesh, {});
+  const Mesh out = reordered_mesh(mesh, pm);
+  ASSERT_EQ(out.vertex_count(), mesh.vertex_count());  // triceratops uses every vertex
+  ASSERT_EQ(out.face_count(), mesh.face_count());
+  for (std::size_t t = 0; t < out.face_count(); ++t) {
+    const std::uint32_t f = pm.triangle_origin[t];
+    EXPECT_EQ(out.face_material[t], mesh.face_material[f]);
+    for (int i = 0; i < 3; ++i)
+      EXPECT_EQ(out.positions[out.indices[3 * t + i]], mesh.positions[mesh.indices[3 * f + i]]);
+  }
+}
+
 TEST(ProgressiveMesh, LodForTriangleCount) {
   const ProgressiveMesh pm = build_progressive_mesh(make_grid(8, 8), {});
   EXPECT_EQ(pm.lod_for_triangle_count(128), 0u);
@@ -146,6 +182,9 @@ TEST(ProgressiveMesh, BadInputIsAnInputError) {
   expect_input_error(triangles_mesh({0, 1, 2, 0, 1, 3}, 4), {}, "inconsistent winding");
   expect_input_error(triangles_mesh({0, 1, 1}, 3), {}, "repeats a vertex");
   expect_input_error(triangles_mesh({0, 1, 7}, 3), {}, "vertex index 7");
+  Mesh nan = triangles_mesh({0, 1, 2}, 3);
+  nan.positions[2].y = std::nanf("");
+  expect_input_error(nan, {}, "vertex 2 has a non-finite position");
   ProgressiveMeshParams big;
   big.min_triangles = 3;
   expect_input_error(triangles_mesh({0, 1, 2, 0, 2, 3}, 4), big, "--min-triangles 3");
