@@ -3,9 +3,17 @@
 //     meshopt_analyzeVertexCache on the same index buffer in the same binary (goal: ratio >= 1)
 //   - set-associative LRU byte cache, 16 KiB / 64 B / 4-way (goal: 150 M accesses/s)
 //   - one-pass fully associative LRU stack profile, every size at once (goal: 30 M accesses/s)
+//   - LRU post-transform cache at k = 16, 64, 1024, 100000: the O(1) recency list of
+//     cache_sim/vertex_cache.h against the O(k) version it replaced (a vector of resident vertices,
+//     most recent first, searched and rotated on every access), kept here only as the "before";
+//     over bunny00 in meshoptimizer's order (hits near the front of the recency list) and a random
+//     walk over 2^17 vertices (hits at every depth; a miss scans all resident entries)
 // Byte-cache inputs are the line numbers of a synthetic frame-like texel trace (512x512 pixels,
 // bilinear, a 1024^2 texture in block4 layout; tests/support/synthetic_frame.h).
 #include <meshoptimizer.h>
+
+#include <algorithm>
+#include <random>
 
 #include <benchmark/benchmark.h>
 
@@ -137,6 +145,79 @@ void BM_SetAssocLruProfile_64Sets_Ways1to16(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * lines.size()));
 }
 BENCHMARK(BM_SetAssocLruProfile_64Sets_Ways1to16);
+
+// The O(k)-per-access LRU as it was before the recency list: reference for the benchmark only.
+class LinearScanLruBefore {
+ public:
+  explicit LinearScanLruBefore(unsigned entries) : entries_(entries) { recency_.reserve(entries); }
+  bool access(std::uint32_t vertex) {
+    const auto found = std::find(recency_.begin(), recency_.end(), vertex);
+    if (found != recency_.end()) {
+      std::rotate(recency_.begin(), found, found + 1);
+      return true;
+    }
+    if (recency_.size() < entries_)
+      recency_.push_back(vertex);
+    else
+      recency_.back() = vertex;
+    std::rotate(recency_.begin(), recency_.end() - 1, recency_.end());
+    return false;
+  }
+
+ private:
+  unsigned entries_;
+  std::vector<std::uint32_t> recency_;
+};
+
+const std::vector<std::uint32_t>& random_walk_stream() {
+  static const std::vector<std::uint32_t> stream = [] {
+    std::mt19937 rng(1);
+    std::uniform_int_distribution<int> step(-64, 64);
+    std::vector<std::uint32_t> out;
+    std::int64_t v = 1 << 16;
+    for (int i = 0; i < 200000; ++i) {
+      v = std::clamp<std::int64_t>(v + step(rng), 0, (1 << 17) - 1);
+      out.push_back(static_cast<std::uint32_t>(v));
+    }
+    return out;
+  }();
+  return stream;
+}
+
+template <typename Cache>
+void run(benchmark::State& state, const std::vector<std::uint32_t>& stream, Cache make) {
+  std::uint64_t misses = 0;
+  for (auto _ : state) {
+    auto cache = make();
+    misses = 0;
+    for (const std::uint32_t v : stream) misses += !cache.access(v);
+    benchmark::DoNotOptimize(misses);
+  }
+  state.counters["misses"] = static_cast<double>(misses);
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * stream.size()));
+}
+
+void BM_Lru_Bunny_RecencyList(benchmark::State& state) {
+  const unsigned k = static_cast<unsigned>(state.range(0));
+  run(state, bunny_indices(), [k] { return VertexCache(VertexCachePolicy::Lru, k); });
+}
+void BM_Lru_Bunny_LinearScanBefore(benchmark::State& state) {
+  const unsigned k = static_cast<unsigned>(state.range(0));
+  run(state, bunny_indices(), [k] { return LinearScanLruBefore(k); });
+}
+void BM_Lru_RandomWalk_RecencyList(benchmark::State& state) {
+  const unsigned k = static_cast<unsigned>(state.range(0));
+  run(state, random_walk_stream(), [k] { return VertexCache(VertexCachePolicy::Lru, k); });
+}
+void BM_Lru_RandomWalk_LinearScanBefore(benchmark::State& state) {
+  const unsigned k = static_cast<unsigned>(state.range(0));
+  run(state, random_walk_stream(), [k] { return LinearScanLruBefore(k); });
+}
+
+BENCHMARK(BM_Lru_Bunny_RecencyList)->Arg(16)->Arg(64)->Arg(1024)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Lru_Bunny_LinearScanBefore)->Arg(16)->Arg(64)->Arg(1024)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Lru_RandomWalk_RecencyList)->Arg(16)->Arg(64)->Arg(1024)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Lru_RandomWalk_LinearScanBefore)->Arg(16)->Arg(64)->Arg(1024)->Arg(100000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace rastrace

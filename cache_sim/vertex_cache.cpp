@@ -17,26 +17,52 @@ VertexCachePolicy parse_vertex_cache_policy(const std::string& text) {
 VertexCache::VertexCache(VertexCachePolicy policy, unsigned entries)
     : policy_(policy), entries_(entries), clock_(std::uint64_t{entries} + 1) {
   if (entries == 0) throw InputError("vertex cache size 0: expected at least 1 entry");
-  recency_.reserve(entries);
 }
 
 void VertexCache::clear() {
   stamps_.clear();
   clock_ = std::uint64_t{entries_} + 1;
-  recency_.clear();
+  // Only resident vertices have a slot index to reset: O(resident), paid for by their misses.
+  for (const Slot& slot : slots_) slot_of_[slot.vertex] = 0;
+  slots_.clear();
+  head_ = tail_ = kNoSlot;
+}
+
+void VertexCache::unlink(std::uint32_t slot) {
+  const Slot& s = slots_[slot];
+  (s.prev == kNoSlot ? head_ : slots_[s.prev].next) = s.next;
+  (s.next == kNoSlot ? tail_ : slots_[s.next].prev) = s.prev;
+}
+
+void VertexCache::push_front(std::uint32_t slot) {
+  slots_[slot].prev = kNoSlot;
+  slots_[slot].next = head_;
+  (head_ == kNoSlot ? tail_ : slots_[head_].prev) = slot;
+  head_ = slot;
 }
 
 bool VertexCache::access_lru(std::uint32_t vertex) {
-  const auto found = std::find(recency_.begin(), recency_.end(), vertex);
-  if (found != recency_.end()) {
-    std::rotate(recency_.begin(), found, found + 1);
+  if (vertex >= slot_of_.size())
+    slot_of_.resize(std::max<std::size_t>(std::size_t{vertex} + 1, slot_of_.size() * 2), 0);
+  if (const std::uint32_t found = slot_of_[vertex]) {
+    if (found - 1 != head_) {
+      unlink(found - 1);
+      push_front(found - 1);
+    }
     return true;
   }
-  if (recency_.size() < entries_)
-    recency_.push_back(vertex);
-  else
-    recency_.back() = vertex;
-  std::rotate(recency_.begin(), recency_.end() - 1, recency_.end());
+  std::uint32_t slot;
+  if (slots_.size() < entries_) {
+    slot = static_cast<std::uint32_t>(slots_.size());
+    slots_.push_back({vertex, kNoSlot, kNoSlot});
+  } else {
+    slot = tail_;  // evict the least recently used
+    slot_of_[slots_[slot].vertex] = 0;
+    unlink(slot);
+    slots_[slot].vertex = vertex;
+  }
+  slot_of_[vertex] = slot + 1;
+  push_front(slot);
   return false;
 }
 

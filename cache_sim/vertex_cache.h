@@ -1,5 +1,8 @@
 // The post-transform vertex cache: fully associative, k entries, keyed by vertex id.
 // FIFO is what most hardware built (Hoppe 1999); LRU is the other textbook policy.
+// Both are O(1) per access for any k (up to the 2^20 entries the command line accepts): FIFO
+// as insertion timestamps, LRU as a doubly linked recency list over k slots with a per-vertex
+// slot index. Memory is one word per vertex id seen plus one slot per resident vertex.
 #pragma once
 
 #include <cstdint>
@@ -41,12 +44,24 @@ class VertexCache {
     return false;
   }
   bool access_lru(std::uint32_t vertex);
+  void unlink(std::uint32_t slot);
+  void push_front(std::uint32_t slot);
+
+  static constexpr std::uint32_t kNoSlot = 0xFFFFFFFFu;
+  struct Slot {
+    std::uint32_t vertex;
+    std::uint32_t prev;  // towards the most recent; kNoSlot at the head
+    std::uint32_t next;  // towards the least recent; kNoSlot at the tail
+  };
 
   VertexCachePolicy policy_;
   unsigned entries_;
   std::vector<std::uint64_t> stamps_;  // FIFO: insertion clock per vertex
   std::uint64_t clock_;
-  std::vector<std::uint32_t> recency_;  // LRU: resident vertices, most recent first
+  std::vector<std::uint32_t> slot_of_;  // LRU: per vertex, its slot + 1; 0 = not resident
+  std::vector<Slot> slots_;             // LRU: one per resident vertex (at most entries_)
+  std::uint32_t head_ = kNoSlot;        // LRU: most recently used slot
+  std::uint32_t tail_ = kNoSlot;        // LRU: least recently used slot, the next victim
 };
 
 struct VertexStreamStats {

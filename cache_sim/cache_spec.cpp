@@ -1,0 +1,385 @@
+#include "cache_sim/cache_spec.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "core/error.h"
+#include "core/units.h"
+
+namespace rastrace {
+namespace {
+
+// Where a value came from, for errors: "--cache 'size=0,line=64B': size=0".
+struct Context {
+  const std::string& option;
+  const std::string& text;
+  std::string where(const std::string& detail) const { return option + " '" + text + "': " + detail; }
+};
+
+enum KindMask : unsigned { kVertexKey = 1, kByteKey = 2, kBothKinds = 3 };
+
+using Setter = void (*)(CacheSpec& spec, const std::vector<std::string>& values, const Context& context);
+
+// One key of the grammar. New keys (presets such as model=..., sector=...) are new rows.
+struct KeyRule {
+  const char* name;
+  unsigned kinds;
+  bool alternatives;   // accepts a/b/c (and ranges where the values are numbers)
+  const char* values;  // what is accepted, for errors and help
+  Setter set_vertex;   // kinds & kVertexKey
+  Setter set_byte;     // kinds & kByteKey
+};
+
+[[noreturn]] void bad_value(const Context& c, const char* key, const std::string& value, const std::string& expected) {
+  throw InputError(c.where(std::string(key) + "=" + value + ": expected " + expected));
+}
+
+template <typename T>
+void push_unique(std::vector<T>& out, const T& value) {
+  if (std::find(out.begin(), out.end(), value) == out.end()) out.push_back(value);
+}
+
+// Alternatives of sizes or counts, ranges expanded (core/units.h does the ranges).
+std::vector<std::uint64_t> numbers(const std::vector<std::string>& values, const Context& c, const char* key,
+                                   bool bytes) {
+  std::vector<std::uint64_t> out;
+  const std::string what = c.option + " " + key;
+  for (const std::string& v : values)
+    for (const std::uint64_t n : bytes ? parse_byte_size_list(v, what) : parse_count_list(v, what)) push_unique(out, n);
+  return out;
+}
+
+std::uint32_t at_most_32_bits(std::uint64_t n, const Context& c, const char* key, std::uint64_t limit) {
+  if (n > limit) bad_value(c, key, std::to_string(n), "at most " + std::to_string(limit));
+  return static_cast<std::uint32_t>(n);
+}
+
+void set_entries(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  s.entries.clear();
+  for (const std::uint64_t k : numbers(values, c, "entries", false)) {
+    if (k == 0 || k > (1u << 20)) bad_value(c, "entries", std::to_string(k), "1..1048576");
+    s.entries.push_back(static_cast<unsigned>(k));
+  }
+}
+
+void set_vertex_policy(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  s.vertex_policies.clear();
+  for (const std::string& v : values) {
+    if (v != "fifo" && v != "lru") bad_value(c, "policy", v, "fifo or lru (a vertex cache)");
+    push_unique(s.vertex_policies, parse_vertex_cache_policy(v));
+  }
+}
+
+void set_size(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  s.sizes = numbers(values, c, "size", true);
+}
+
+void set_line(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  s.lines.clear();
+  for (const std::uint64_t l : numbers(values, c, "line", true))
+    s.lines.push_back(at_most_32_bits(l, c, "line", 1u << 30));
+}
+
+void set_assoc(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  s.assocs.clear();
+  for (const std::string& v : values) {
+    if (v == "full") {
+      push_unique(s.assocs, 0u);
+      continue;
+    }
+    for (const std::uint64_t w : numbers({v}, c, "assoc", false)) {
+      if (w == 0) bad_value(c, "assoc", v, "a number of ways >= 1 or full");
+      push_unique(s.assocs, at_most_32_bits(w, c, "assoc", 1u << 31));
+    }
+  }
+}
+
+void set_byte_policy(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  s.policies.clear();
+  for (const std::string& v : values) {
+    if (v != "fifo" && v != "lru" && v != "random" && v != "opt")
+      bad_value(c, "policy", v, "fifo, lru, random or opt (a byte cache)");
+    push_unique(s.policies, parse_replacement_policy(v));
+  }
+}
+
+void set_layout(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  const LayoutSpec base = s.layouts.front();  // texel and align may have been given first
+  s.layouts.clear();
+  for (const std::string& v : values) {
+    LayoutSpec layout;
+    try {
+      layout = parse_layout(v);
+    } catch (const InputError&) {
+      bad_value(c, "layout", v, "linear, block2, block4, block8, block16 or morton");
+    }
+    layout.texel_bytes = base.texel_bytes;
+    layout.alignment = base.alignment;
+    if (std::none_of(s.layouts.begin(), s.layouts.end(),
+                     [&](const LayoutSpec& l) { return l.kind == layout.kind && l.block == layout.block; }))
+      s.layouts.push_back(layout);
+  }
+}
+
+std::uint64_t one_size(const std::vector<std::string>& values, const Context& c, const char* key) {
+  return parse_byte_size(values.front(), c.option + " " + key);
+}
+
+void set_texel(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  const std::uint32_t texel = at_most_32_bits(one_size(values, c, "texel"), c, "texel", 16);
+  for (LayoutSpec& l : s.layouts) l.texel_bytes = texel;
+}
+
+void set_align(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  const std::uint64_t align = one_size(values, c, "align");
+  for (LayoutSpec& l : s.layouts) l.alignment = align;
+}
+
+void set_seed(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  s.seed = parse_count(values.front(), c.option + " seed");
+}
+
+void set_source(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  try {
+    s.source = parse_sweep_source(values.front());
+  } catch (const InputError&) {
+    bad_value(c, "source", values.front(), "texel, vertex or address");
+  }
+}
+
+void set_stride(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  s.stride = at_most_32_bits(one_size(values, c, "stride"), c, "stride", 1u << 20);
+}
+
+// Vertex keys first, then byte keys, in the order the help lists them.
+constexpr KeyRule kKeys[] = {
+    {"entries", kVertexKey, true, "1..1048576, e.g. entries=16 or entries=4..64", set_entries, nullptr},
+    {"size", kByteKey, true, "a byte size, e.g. size=16KiB or size=1KiB..64KiB", nullptr, set_size},
+    {"line", kByteKey, true, "a byte size, e.g. line=64B or line=32B/64B", nullptr, set_line},
+    {"assoc", kByteKey, true, "ways or full, e.g. assoc=4 or assoc=1/2/4/full", nullptr, set_assoc},
+    {"policy", kBothKinds, true, "fifo|lru (vertex cache), fifo|lru|random|opt (byte cache)", set_vertex_policy,
+     set_byte_policy},
+    {"layout", kByteKey, true, "linear|block2|block4|block8|block16|morton", nullptr, set_layout},
+    {"texel", kByteKey, false, "texel bytes, e.g. texel=4B", nullptr, set_texel},
+    {"align", kByteKey, false, "level alignment, e.g. align=4KiB", nullptr, set_align},
+    {"seed", kByteKey, false, "the random policy's seed, e.g. seed=1", nullptr, set_seed},
+    {"source", kByteKey, false, "texel|vertex|address", nullptr, set_source},
+    {"stride", kByteKey, false, "bytes per vertex for source=vertex, e.g. stride=32B", nullptr, set_stride},
+};
+
+std::string key_names() {
+  std::string out;
+  for (const KeyRule& k : kKeys) out += std::string(out.empty() ? "" : ", ") + k.name;
+  return out;
+}
+
+const KeyRule* find_key(const std::string& name) {
+  for (const KeyRule& k : kKeys)
+    if (name == k.name) return &k;
+  return nullptr;
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t at = text.find(separator, start);
+    parts.push_back(text.substr(start, at == std::string::npos ? std::string::npos : at - start));
+    if (at == std::string::npos) return parts;
+    start = at + 1;
+  }
+}
+
+bool all_digits(const std::string& s) {
+  return !s.empty() &&
+         std::all_of(s.begin(), s.end(), [](char ch) { return std::isdigit(static_cast<unsigned char>(ch)); });
+}
+
+// The spec a pre-grammar spelling meant, or "" when `text` is not one:
+//   fifo:16 -> entries=16,policy=fifo          (render --vcache, texsweep --vcache)
+//   16KiB,64B,4way,lru -> size=16KiB,line=64B,assoc=4,policy=lru   (render --tcache)
+//   12,16 or 4..64 -> entries=12/16 or entries=4..64                 (vcache/adjacency --cache)
+std::string old_spelling(const std::string& text) {
+  const std::vector<std::string> items = split(text, ',');
+  if (items.size() == 1) {
+    const std::size_t colon = text.find(':');
+    if (colon != std::string::npos && all_digits(text.substr(colon + 1)))
+      return "entries=" + text.substr(colon + 1) + ",policy=" + text.substr(0, colon);
+  }
+  bool counts = true;
+  for (const std::string& item : items) {
+    const std::size_t dots = item.find("..");
+    counts = counts && (all_digits(item) || (dots != std::string::npos && all_digits(item.substr(0, dots)) &&
+                                             all_digits(item.substr(dots + 2))));
+  }
+  if (counts) {
+    std::string out = "entries=";
+    for (std::size_t i = 0; i < items.size(); ++i) out += (i ? "/" : "") + items[i];
+    return out;
+  }
+  if (items.size() == 4) {
+    std::string assoc = items[2];
+    if (assoc == "direct")
+      assoc = "1";
+    else if (assoc.size() > 3 && assoc.ends_with("way"))
+      assoc = assoc.substr(0, assoc.size() - 3);
+    if (assoc == "full" || all_digits(assoc))
+      return "size=" + items[0] + ",line=" + items[1] + ",assoc=" + assoc + ",policy=" + items[3];
+  }
+  return "";
+}
+
+}  // namespace
+
+std::size_t CacheSpec::combinations() const {
+  if (kind == CacheKind::Vertex) return vertex_policies.size() * entries.size();
+  return layouts.size() * policies.size() * lines.size() * assocs.size() * sizes.size();
+}
+
+CacheSpec parse_cache_spec(const std::string& text, const std::string& option) {
+  const Context c{option, text};
+  if (text.empty()) throw InputError(option + ": empty cache spec; expected key=value items (" + key_names() + ")");
+  struct Item {
+    const KeyRule* key;
+    std::vector<std::string> values;
+  };
+  std::vector<Item> items;
+  for (const std::string& item : split(text, ',')) {
+    if (item.empty()) throw InputError(c.where("empty item; expected key=value items separated by ','"));
+    const std::size_t eq = item.find('=');
+    if (eq == std::string::npos) {
+      if (const std::string spelled = old_spelling(text); !spelled.empty())
+        throw InputError(c.where("write " + spelled));
+      throw InputError(c.where("item '" + item + "': expected key=value, with key one of " + key_names()));
+    }
+    const std::string name = item.substr(0, eq);
+    const KeyRule* key = find_key(name);
+    if (!key) throw InputError(c.where("unknown key '" + name + "': expected one of " + key_names()));
+    for (const Item& earlier : items)
+      if (earlier.key == key) throw InputError(c.where("key '" + name + "' given twice"));
+    std::vector<std::string> values = split(item.substr(eq + 1), '/');
+    for (const std::string& v : values)
+      if (v.empty()) throw InputError(c.where(name + "=" + item.substr(eq + 1) + ": expected " + key->values));
+    if (values.size() > 1 && !key->alternatives)
+      throw InputError(c.where(name + " takes one value, not alternatives: " + item.substr(eq + 1)));
+    items.push_back({key, std::move(values)});
+  }
+
+  // The kind follows from the keys: entries means a vertex cache, any byte-only key a byte cache.
+  const KeyRule* vertex_key = nullptr;
+  const KeyRule* byte_key = nullptr;
+  for (const Item& item : items) {
+    if (item.key->kinds == kVertexKey) vertex_key = item.key;
+    if (item.key->kinds == kByteKey && !byte_key) byte_key = item.key;
+  }
+  if (vertex_key && byte_key)
+    throw InputError(c.where(std::string(vertex_key->name) + " (a vertex cache) and " + byte_key->name +
+                             " (a byte cache) cannot be mixed in one spec"));
+  CacheSpec spec;
+  spec.kind = vertex_key ? CacheKind::Vertex : CacheKind::Byte;
+  if (!vertex_key && !byte_key)
+    throw InputError(
+        c.where("missing entries=... (a vertex cache, e.g. entries=16,policy=fifo) or size=... "
+                "(a byte cache, e.g. size=16KiB,line=64B,assoc=4,policy=lru)"));
+  // texel and align apply to every layout, whichever order they were written in.
+  std::stable_partition(items.begin(), items.end(), [](const Item& i) { return std::string(i.key->name) == "layout"; });
+  for (const Item& item : items)
+    (spec.kind == CacheKind::Vertex ? item.key->set_vertex : item.key->set_byte)(spec, item.values, c);
+  if (spec.kind == CacheKind::Vertex && spec.entries.empty())
+    throw InputError(c.where("missing entries=...: a vertex cache needs its size, e.g. entries=16"));
+  if (spec.kind == CacheKind::Byte && spec.sizes.empty())
+    throw InputError(c.where("missing size=...: a byte cache needs its capacity, e.g. size=16KiB"));
+  return spec;
+}
+
+std::vector<VertexCacheSpec> vertex_caches(const CacheSpec& spec) {
+  std::vector<VertexCacheSpec> out;
+  if (spec.kind != CacheKind::Vertex) return out;
+  for (const VertexCachePolicy policy : spec.vertex_policies)
+    for (const unsigned k : spec.entries) out.push_back({policy, k});
+  return out;
+}
+
+std::vector<ByteCacheChoice> byte_caches(const CacheSpec& spec) {
+  std::vector<ByteCacheChoice> out;
+  if (spec.kind != CacheKind::Byte) return out;
+  for (const LayoutSpec& layout : spec.layouts)
+    for (const ReplacementPolicy policy : spec.policies)
+      for (const std::uint32_t line : spec.lines)
+        for (const std::uint32_t assoc : spec.assocs)
+          for (const std::uint64_t size : spec.sizes) {
+            ByteCacheChoice choice;
+            choice.cache.size_bytes = size;
+            choice.cache.line_bytes = line;
+            choice.cache.assoc = assoc;
+            choice.cache.policy = policy;
+            choice.cache.seed = spec.seed;
+            choice.layout = layout;
+            out.push_back(choice);
+          }
+  return out;
+}
+
+namespace {
+CacheSpec parse_one(const std::string& text, const std::string& option, CacheKind kind) {
+  const CacheSpec spec = parse_cache_spec(text, option);
+  if (spec.kind != kind)
+    throw InputError(option + " '" + text + "': expected a " +
+                     (kind == CacheKind::Vertex ? "post-transform vertex cache, e.g. entries=16,policy=fifo"
+                                                : "byte cache, e.g. size=16KiB,line=64B,assoc=4,policy=lru"));
+  if (spec.combinations() != 1)
+    throw InputError(option + " '" + text + "': expected one cache, not " + std::to_string(spec.combinations()) +
+                     " alternatives");
+  return spec;
+}
+}  // namespace
+
+VertexCacheSpec parse_vertex_cache(const std::string& text, const std::string& option) {
+  return vertex_caches(parse_one(text, option, CacheKind::Vertex)).front();
+}
+
+ByteCacheChoice parse_byte_cache(const std::string& text, const std::string& option) {
+  const ByteCacheChoice choice = byte_caches(parse_one(text, option, CacheKind::Byte)).front();
+  try {
+    validate(choice.cache);
+  } catch (const InputError& e) {
+    throw InputError(option + " '" + text + "': " + e.what());
+  }
+  return choice;
+}
+
+SweepSpec sweep_spec(const CacheSpec& spec, SweepSource fallback) {
+  SweepSpec out;
+  out.source = spec.source.value_or(fallback);
+  out.sizes = spec.sizes;
+  out.lines = spec.lines;
+  out.assocs = spec.assocs;
+  out.policies = spec.policies;
+  out.layouts = spec.layouts;
+  out.stride = spec.stride;
+  out.seed = spec.seed;
+  return out;
+}
+
+std::string format_cache_spec(const CacheConfig& cache) {
+  return "size=" + format_byte_size(cache.size_bytes) + ",line=" + format_byte_size(cache.line_bytes) +
+         ",assoc=" + (cache.assoc == 0 ? std::string("full") : std::to_string(cache.assoc)) +
+         ",policy=" + to_string(cache.policy);
+}
+
+std::string format_cache_spec(const VertexCacheSpec& cache) {
+  return "entries=" + std::to_string(cache.entries) + ",policy=" + to_string(cache.policy);
+}
+
+std::string cache_spec_keys_help() {
+  std::string out;
+  for (const KeyRule& k : kKeys)
+    out += std::string("  ") + k.name +
+           (k.kinds == kVertexKey ? " (vertex)"
+            : k.kinds == kByteKey ? " (byte)"
+                                  : "") +
+           ": " + k.values + "\n";
+  return out;
+}
+
+}  // namespace rastrace

@@ -1,0 +1,86 @@
+// The one grammar every command uses to name caches (`--cache`, `--vcache`, `--tcache`):
+//
+//   spec         := item (',' item)*
+//   item         := key '=' alternatives
+//   alternatives := value ('/' value)*        a value of a size or count may be a power-of-two
+//                                             range a..b (1KiB..64KiB, 4..64), as in core/units.h
+//
+// Two kinds of cache, told apart by their keys (mixing them is an error):
+//   vertex (post-transform) cache   entries=1..1048576 (required), policy=fifo|lru (fifo)
+//   byte cache                      size=SIZE (required), line=SIZE (64B), assoc=N|full (4),
+//                                   policy=fifo|lru|random|opt (lru),
+//                                   layout=linear|block2|block4|block8|block16|morton (linear),
+//                                   texel=SIZE (4B), align=SIZE (4KiB), seed=N (1),
+//                                   source=texel|vertex|address (what the trace holds), stride=SIZE (32B)
+// size, line, assoc, policy, layout and entries take alternatives; a spec with alternatives
+// stands for the cross product. Expansion order (the last key varies fastest), which is the
+// row order of the sweep tables: byte caches layout, policy, line, assoc, size; vertex caches
+// policy, entries.
+//
+// Errors are InputErrors that name the option and the spec, and list the accepted keys or values.
+// A spec in one of the spellings used before this grammar (`16KiB,64B,4way,lru`, `fifo:16`,
+// `12,16`, `24`) is an error that shows the spec to write instead.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cache_sim/cache_config.h"
+#include "cache_sim/live_bank_sink.h"
+#include "cache_sim/sweep.h"
+#include "cache_sim/texture_layout.h"
+#include "cache_sim/vertex_cache.h"
+
+namespace rastrace {
+
+enum class CacheKind : std::uint8_t { Vertex, Byte };
+
+// One spec as written: every key's alternatives in the order given (duplicates removed), the
+// defaults for keys not given.
+struct CacheSpec {
+  CacheKind kind = CacheKind::Byte;
+  // Vertex caches.
+  std::vector<unsigned> entries;
+  std::vector<VertexCachePolicy> vertex_policies{VertexCachePolicy::Fifo};
+  // Byte caches.
+  std::vector<std::uint64_t> sizes;
+  std::vector<std::uint32_t> lines{64};
+  std::vector<std::uint32_t> assocs{4};  // 0 = fully associative
+  std::vector<ReplacementPolicy> policies{ReplacementPolicy::Lru};
+  std::vector<LayoutSpec> layouts{LayoutSpec{}};  // texel and align applied to every layout
+  std::uint64_t seed = 1;
+  std::optional<SweepSource> source;  // unset: what the trace holds
+  std::uint32_t stride = 32;
+
+  // How many caches the spec stands for.
+  std::size_t combinations() const;
+};
+
+// Parses `text`, the value of `option` ("--cache"). Throws InputError on any error above.
+CacheSpec parse_cache_spec(const std::string& text, const std::string& option);
+
+// The cross product, in the expansion order above. Byte caches are not validated here: a sweep
+// skips impossible geometries, a replay reports them (validate() in cache_config.h).
+std::vector<VertexCacheSpec> vertex_caches(const CacheSpec& spec);
+struct ByteCacheChoice {
+  CacheConfig cache;
+  LayoutSpec layout;
+};
+std::vector<ByteCacheChoice> byte_caches(const CacheSpec& spec);
+// Exactly one cache of one kind (render's --vcache and --tcache, adjacency's --cache): the other
+// kind or alternatives are InputErrors; the byte cache's geometry is validated.
+VertexCacheSpec parse_vertex_cache(const std::string& text, const std::string& option);
+ByteCacheChoice parse_byte_cache(const std::string& text, const std::string& option);
+// A byte-cache spec as the sweep runs it (source: the spec's, or `fallback` when it has none).
+SweepSpec sweep_spec(const CacheSpec& spec, SweepSource fallback);
+
+// The spec that describes one cache, e.g. "size=16KiB,line=64B,assoc=4,policy=lru".
+std::string format_cache_spec(const CacheConfig& cache);
+std::string format_cache_spec(const VertexCacheSpec& cache);
+
+// The keys, their kinds and accepted values, one line each (for --help and errors).
+std::string cache_spec_keys_help();
+
+}  // namespace rastrace
