@@ -4,6 +4,7 @@
 #include <numeric>
 
 #include "core/error.h"
+#include "reorder/kcache.h"
 #include "reorder/ordering.h"
 #include "reorder/texgroup.h"
 
