@@ -51,7 +51,7 @@ std::vector<ReproducedFigure> reproduce_castano() {
   };
   const Row rows[] = {
       {"Scanline", "scanline", 1.062, 1.062, 1.062, ""},
-      {"NVTriStrip", "strip", 0.818, 0.775, 0.875, "ours: rastrace's strip, not NvTriStrip"},
+      {"NVTriStrip", "nvstrip", 0.818, 0.775, 0.875, ""},
       {"Morton", "morton", 0.719, 0.750, 0.812, ""},
       // His row is not a figure of the algorithm: his implementation's look-ahead copies 8 bytes of
       // the cache (sizeof of an expression instead of n entries), so it starts from two valid entries
