@@ -19,7 +19,7 @@ namespace rastrace {
 //    after the fan triangle, so the stream misses exactly what the simulated FIFO does.
 // Parameters: cache_size (K, the FIFO ordered for; above 1024 ordered as 1024). The policy is
 // ignored (the cost is defined on a FIFO). O(faces x K x valence): bunny00 (75,408 faces) in
-// about 0.15 s at K = 16, roughly twice Forsyth's time. Deterministic.
+// about 70 ms of CPU at K = 16, 1.8 times Forsyth's time. Deterministic.
 // FIFO ACMR ordered for and run on K = 12 / 16 / 20: 16x16 grid 0.602 / 0.590 / 0.564, CGAL's
 // fandisk 0.621 / 0.601 / 0.575, triceratops 0.645 / 0.611 / 0.604, bunny00 0.641 / 0.612 /
 // 0.594; about 0.56-0.65 on real meshes from K = 32 down to 12.
