@@ -11,6 +11,7 @@
 #include <meshoptimizer.h>
 
 #include "cache_sim/vertex_cache.h"
+#include "reorder/kcache.h"
 #include "reorder/ordering.h"
 #include "scenes/mesh_io.h"
 

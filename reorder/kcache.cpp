@@ -1,178 +1,184 @@
-// K-Cache-Reorder: Lin and Yu, "An Improved Vertex Caching Scheme for 3D Mesh Rendering",
-// IEEE TVCG 12(4), 2006.
+// K-Cache-Reorder: Lin and Yu, "An Improved Vertex Caching Scheme for 3D Mesh Rendering", IEEE
+// TVCG 12(4), 2006, as its independent public implementations agree on it (reorder/kcache.h).
 //
-// Our reading of the paper. Triangles are emitted vertex by vertex, like Tipsy: a focus vertex
-// is chosen among the vertices resident in a simulated FIFO of K entries, and all its remaining
-// triangles are emitted before the next focus is chosen. What makes it "K-cache" aware is the
-// choice: every resident vertex with live triangles is scored by a one-step look-ahead on the
-// exact cache state,
-//     cost(v) = (m(v) + 0.1 e(v)) / t(v) + (1 if v itself would leave the FIFO during its fan),
-// t(v) its live triangles, m(v) the cache misses emitting them would cause (distinct vertices of
-// the fan not resident), e(v) the resident vertices the m(v) insertions would push out of the
-// FIFO while they still have triangles outside the fan. The lowest cost wins; ties go to the
-// vertex that entered the cache first (it is the next to be lost). Inside a fan, triangles are
-// emitted greedily: the one with the most resident vertices first (input order on ties), so a
-// vertex loaded for one triangle serves the next. With no resident live vertex (a dead end) the
-// most recently evicted vertex that still has triangles is resumed, else the vertex with fewest
-// live triangles of the first live triangle in input order starts a new region.
-// The look-ahead makes it several times slower than Tipsy, as the paper's timings show, but it
-// stays linear in the faces times K.
-//
-// Parameters: cache_size (K; above 1024 ordered as 1024). The policy is ignored (the model is
-// FIFO). ACMR on real meshes about 0.61-0.64 at K = 16 (fandisk 0.615, triceratops 0.630,
-// bunny00 0.636); 16x16 grid: 0.627, 0.596, 0.564 at FIFO 12, 16, 20. Deterministic.
-#include <algorithm>
+// The FIFO is kept as push serial numbers, not as an array that shifts: push number s put
+// ring[s % k] in the cache, and v is resident while pushes - serial[v] < k. A look-ahead then
+// needs no copy of the cache: the candidate's pushes get serials above the current count in a
+// scratch array stamped per candidate, and every resident test reads that array first. So one
+// candidate costs its fan's corners, not K, and a step costs O(K x fan), as in the paper.
+#include "reorder/kcache.h"
 
-#include "reorder/ordering.h"
+#include <algorithm>
+#include <functional>
+#include <queue>
+#include <utility>
+
 #include "reorder/vertex_faces.h"
 
 namespace rastrace {
 
 namespace {
-// A live vertex pushed out is a miss only if nothing reloads it before its next use, and often
-// something does: it is charged a tenth of a miss. The weight is ours, chosen on fandisk,
-// triceratops and bunny00 at FIFO 12-32: 0 is within 1% of 0.1, a full miss is 20-35% worse.
-constexpr double kLostWeight = 0.1;
-// Every step scores every resident vertex: O(K) per fan. Larger targets are ordered as this one.
+
+// Every step scores every resident vertex: larger targets are ordered as this one.
 constexpr std::uint32_t kMaxCache = 1024;
+constexpr std::uint8_t kPending = 2;
+
+// The cost 1.0 C1 - 0.5 C2 + 1.3 C3, with C3 = pushes / K, scaled by 10 K: integers, so that
+// ties are exact and the tie rule decides them.
+std::int64_t scaled_cost(std::uint32_t k, std::uint32_t pushes, std::uint32_t triangles,
+                         std::uint32_t pushes_to_leave) {
+  return 10 * std::int64_t(k) * pushes - 5 * std::int64_t(k) * triangles + 13 * std::int64_t(pushes_to_leave);
+}
+
+class KCacheReorder {
+ public:
+  KCacheReorder(const Mesh& mesh, std::uint32_t k)
+      : topology_(build_vertex_faces(mesh)),
+        idx_(mesh.indices.data()),
+        k_(k),
+        live_(topology_.vertex_count),
+        emitted_(topology_.face_count, 0),
+        serial_(topology_.vertex_count, 0),
+        ring_(k, 0),
+        scratch_epoch_(topology_.vertex_count, 0),
+        scratch_serial_(topology_.vertex_count, 0) {
+    for (std::uint32_t v = 0; v < topology_.vertex_count; ++v) {
+      live_[v] = topology_.vertex_face_offsets[v + 1] - topology_.vertex_face_offsets[v];
+      if (live_[v] > 0) fewest_.emplace(live_[v], v);
+    }
+  }
+
+  Ordering run() {
+    ordering_.face_order.reserve(topology_.face_count);
+    ordering_.indices.reserve(3 * std::size_t(topology_.face_count));
+    while (ordering_.face_order.size() < topology_.face_count) emit_fan(choose_focus());
+    return std::move(ordering_);
+  }
+
+ private:
+  bool resident(std::uint32_t v) const { return serial_[v] != 0 && pushes_ - serial_[v] < k_; }
+
+  void push(std::uint32_t v) {
+    serial_[v] = ++pushes_;
+    ring_[pushes_ % k_] = v;
+  }
+
+  // A degenerate face lists each distinct vertex once (as the vertex-face lists do).
+  static bool distinct_corner(const std::uint32_t* c, int i) {
+    return !((i > 0 && c[0] == c[i]) || (i > 1 && c[1] == c[i]));
+  }
+  const std::uint32_t* corners(std::uint32_t face) const { return idx_ + 3 * std::size_t(face); }
+
+  // The look-ahead for candidate v: emit v's remaining fan on a copy of the cache.
+  std::int64_t cost(std::uint32_t v) {
+    ++epoch_;
+    const auto serial = [&](std::uint32_t u) { return scratch_epoch_[u] == epoch_ ? scratch_serial_[u] : serial_[u]; };
+    std::uint32_t extra = 0;  // pushes of the look-ahead (C1)
+    for (const std::uint32_t face : topology_.faces_of_vertex(v)) {
+      if (emitted_[face]) continue;
+      const std::uint32_t* c = corners(face);
+      for (int n = 0; n < 3; ++n) {
+        if (!distinct_corner(c, n)) continue;
+        const std::uint32_t s = serial(c[n]);
+        if (s != 0 && pushes_ + extra - s < k_) continue;
+        ++extra;
+        scratch_epoch_[c[n]] = epoch_;
+        scratch_serial_[c[n]] = pushes_ + extra;
+      }
+    }
+    // C3 x K: pushes until v leaves the copy; K if it has left already.
+    const std::uint32_t age = pushes_ + extra - serial(v);
+    const std::uint32_t to_leave = age < k_ ? k_ - age : k_;
+    return scaled_cost(k_, extra, live_[v], to_leave);
+  }
+
+  std::uint32_t choose_focus() {
+    std::int64_t best = 0;
+    std::uint32_t focus = 0;
+    bool found = false;
+    // Oldest entry first; `<=` lets the most recently entered win ties.
+    const std::uint32_t first = pushes_ >= k_ ? pushes_ - k_ + 1 : 1;
+    for (std::uint32_t s = first; s <= pushes_; ++s) {
+      const std::uint32_t v = ring_[s % k_];
+      if (live_[v] == 0) continue;
+      const std::int64_t c = cost(v);
+      if (!found || c <= best) {
+        best = c;
+        focus = v;
+        found = true;
+      }
+    }
+    if (found) return focus;
+    // No resident vertex has triangles left: restart at the vertex with the fewest (lowest id
+    // on ties). The heap holds stale entries from before each decrement; they are skipped.
+    while (fewest_.top().first != live_[fewest_.top().second]) fewest_.pop();
+    return fewest_.top().second;
+  }
+
+  void emit(std::uint32_t face) {
+    emitted_[face] = 1;
+    ordering_.face_order.push_back(face);
+    const std::uint32_t* c = corners(face);
+    ordering_.indices.insert(ordering_.indices.end(), c, c + 3);
+    for (int n = 0; n < 3; ++n) {
+      if (!distinct_corner(c, n)) continue;
+      if (--live_[c[n]] > 0) fewest_.emplace(live_[c[n]], c[n]);
+    }
+  }
+
+  // After u enters the cache, every other triangle of u whose corners are all resident is drawn
+  // too. They are found at that push but drawn just after the fan triangle that caused it: drawn
+  // before it, they would fetch its corners in another order than the simulated FIFO did, and
+  // the stream would pay other misses than the ones the choices were made on.
+  void collect_completed(std::uint32_t u, std::uint32_t current) {
+    for (const std::uint32_t face : topology_.faces_of_vertex(u)) {
+      if (emitted_[face] || face == current) continue;
+      const std::uint32_t* c = corners(face);
+      if (!resident(c[0]) || !resident(c[1]) || !resident(c[2])) continue;
+      emitted_[face] = kPending;
+      completed_.push_back(face);
+    }
+  }
+
+  void emit_fan(std::uint32_t focus) {
+    fan_.clear();
+    for (const std::uint32_t face : topology_.faces_of_vertex(focus))
+      if (!emitted_[face]) fan_.push_back(face);
+    for (const std::uint32_t face : fan_) {
+      if (emitted_[face]) continue;  // completed by an earlier push of this fan
+      const std::uint32_t* c = corners(face);
+      for (int n = 0; n < 3; ++n) {
+        if (!distinct_corner(c, n) || resident(c[n])) continue;
+        push(c[n]);
+        collect_completed(c[n], face);
+      }
+      emit(face);
+      for (const std::uint32_t completed : completed_) emit(completed);
+      completed_.clear();
+    }
+  }
+
+  const MeshTopology topology_;
+  const std::uint32_t* idx_;
+  const std::uint32_t k_;
+  std::vector<std::uint32_t> live_;    // unemitted faces per vertex
+  std::vector<std::uint8_t> emitted_;  // 0, 1, or kPending: completed, to be drawn after the fan triangle
+  std::vector<std::uint32_t> serial_;  // push number that last brought v in; 0: never
+  std::vector<std::uint32_t> ring_;    // ring_[s % k]: the vertex of push s
+  std::uint32_t pushes_ = 0;
+  std::vector<std::uint32_t> scratch_epoch_, scratch_serial_;  // the look-ahead's pushes
+  std::uint32_t epoch_ = 0;
+  std::priority_queue<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::pair<std::uint32_t, std::uint32_t>>,
+                      std::greater<>>
+      fewest_;  // (live faces, vertex), smallest first
+  std::vector<std::uint32_t> fan_, completed_;
+  Ordering ordering_;
+};
+
 }  // namespace
 
 Ordering reorder_kcache(const Mesh& mesh, const ReorderParams& params) {
-  const MeshTopology topology = build_vertex_faces(mesh);
-  const std::uint32_t vertex_count = topology.vertex_count, face_count = topology.face_count;
-  const std::uint32_t* idx = mesh.indices.data();
-  const std::uint32_t k = std::clamp(params.cache_size, 1u, kMaxCache);
-
-  std::vector<std::uint32_t> faces(topology.vertex_faces);  // live faces first in each segment
-  const std::vector<std::uint32_t>& offsets = topology.vertex_face_offsets;
-  std::vector<std::uint32_t> live(vertex_count);
-  for (std::uint32_t v = 0; v < vertex_count; ++v) live[v] = offsets[v + 1] - offsets[v];
-  std::vector<std::uint8_t> emitted(face_count, 0);
-
-  // The FIFO: ring[(head + i) % k], i = 0 oldest; resident[v] says whether v is in it.
-  std::vector<std::uint32_t> ring(k, 0);
-  std::uint32_t head = 0, filled = 0;
-  std::vector<std::uint8_t> resident(vertex_count, 0);
-  std::vector<std::uint32_t> evicted_stack;
-  auto access = [&](std::uint32_t v) {
-    if (resident[v]) return;
-    if (filled == k) {
-      const std::uint32_t old = ring[head];
-      resident[old] = 0;
-      if (live[old] > 0) evicted_stack.push_back(old);
-      ring[head] = v;
-      head = (head + 1) % k;
-    } else {
-      ring[(head + filled++) % k] = v;
-    }
-    resident[v] = 1;
-  };
-
-  // Scratch for the look-ahead: per-vertex counters stamped by candidate.
-  std::vector<std::uint32_t> mark(vertex_count, 0), in_fan(vertex_count, 0);
-  std::uint32_t mark_epoch = 0;
-
-  Ordering ordering;
-  ordering.face_order.reserve(face_count);
-  ordering.indices.reserve(mesh.indices.size());
-  auto remove_live = [&](std::uint32_t v, std::uint32_t face) {
-    const std::uint32_t begin = offsets[v], end = begin + live[v];
-    for (std::uint32_t j = begin; j < end; ++j) {
-      if (faces[j] == face) {
-        faces[j] = faces[end - 1];
-        faces[end - 1] = face;
-        break;
-      }
-    }
-    --live[v];
-  };
-  auto distinct_corner = [](const std::uint32_t* c, int i) {
-    return !((i > 0 && c[0] == c[i]) || (i > 1 && c[1] == c[i]));
-  };
-
-  std::uint32_t input_cursor = 0;
-  std::vector<std::uint32_t> fan;
-  while (ordering.face_order.size() < face_count) {
-    // Choose the focus vertex.
-    std::int64_t focus = -1;
-    double best_cost = 0.0;
-    for (std::uint32_t i = 0; i < filled; ++i) {
-      const std::uint32_t v = ring[(head + i) % k];
-      const std::uint32_t t = live[v];
-      if (t == 0) continue;
-      ++mark_epoch;
-      std::uint32_t misses = 0;
-      for (std::uint32_t j = offsets[v]; j < offsets[v] + t; ++j) {
-        const std::uint32_t* c = idx + 3 * std::size_t(faces[j]);
-        for (int n = 0; n < 3; ++n) {
-          const std::uint32_t u = c[n];
-          if (!distinct_corner(c, n)) continue;
-          if (mark[u] != mark_epoch) {
-            mark[u] = mark_epoch;
-            in_fan[u] = 0;
-            if (!resident[u]) ++misses;
-          }
-          ++in_fan[u];
-        }
-      }
-      std::uint32_t lost = 0;
-      const std::uint32_t evictions = filled + misses > k ? filled + misses - k : 0;
-      for (std::uint32_t n = 0; n < evictions; ++n) {
-        const std::uint32_t u = ring[(head + n) % k];
-        const std::uint32_t used = mark[u] == mark_epoch ? in_fan[u] : 0;
-        if (live[u] > used) ++lost;
-      }
-      // Ring position i counts from the oldest, so filled - i insertions are younger than v: if
-      // those plus the fan's misses exceed k, v leaves the FIFO before its own fan is done.
-      const bool focus_lost = (filled - i) + misses > k;
-      const double cost = (double(misses) + kLostWeight * double(lost)) / double(t) + (focus_lost ? 1.0 : 0.0);
-      if (focus < 0 || cost < best_cost) {  // ring order: the oldest wins ties
-        focus = v;
-        best_cost = cost;
-      }
-    }
-    if (focus < 0) {
-      while (!evicted_stack.empty() && focus < 0) {
-        const std::uint32_t v = evicted_stack.back();
-        evicted_stack.pop_back();
-        if (live[v] > 0) focus = v;
-      }
-    }
-    if (focus < 0) {
-      while (emitted[input_cursor]) ++input_cursor;
-      const std::uint32_t* c = idx + 3 * std::size_t(input_cursor);
-      focus = c[0];
-      for (int n = 1; n < 3; ++n)
-        if (live[c[n]] < live[static_cast<std::uint32_t>(focus)]) focus = c[n];
-    }
-
-    // Emit the focus vertex's fan, most resident vertices first.
-    const auto f = static_cast<std::uint32_t>(focus);
-    fan.assign(faces.begin() + offsets[f], faces.begin() + offsets[f] + live[f]);
-    std::sort(fan.begin(), fan.end());
-    while (!fan.empty()) {
-      std::size_t pick = 0;
-      int pick_hits = -1;
-      for (std::size_t j = 0; j < fan.size(); ++j) {
-        const std::uint32_t* c = idx + 3 * std::size_t(fan[j]);
-        const int hits = resident[c[0]] + resident[c[1]] + resident[c[2]];
-        if (hits > pick_hits) {
-          pick_hits = hits;
-          pick = j;
-        }
-      }
-      const std::uint32_t face = fan[pick];
-      fan.erase(fan.begin() + static_cast<std::ptrdiff_t>(pick));
-      emitted[face] = 1;
-      ordering.face_order.push_back(face);
-      const std::uint32_t* c = idx + 3 * std::size_t(face);
-      ordering.indices.insert(ordering.indices.end(), c, c + 3);
-      for (int n = 0; n < 3; ++n)
-        if (distinct_corner(c, n)) remove_live(c[n], face);
-      for (int n = 0; n < 3; ++n) access(c[n]);
-    }
-  }
-  return ordering;
+  return KCacheReorder(mesh, std::clamp(params.cache_size, 1u, kMaxCache)).run();
 }
 
 }  // namespace rastrace

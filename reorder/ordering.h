@@ -65,7 +65,6 @@ Ordering reorder_random(const Mesh& mesh, const ReorderParams& params);
 Ordering reorder_scanline(const Mesh& mesh, const ReorderParams& params);
 Ordering reorder_forsyth(const Mesh& mesh, const ReorderParams& params);
 Ordering reorder_tipsy(const Mesh& mesh, const ReorderParams& params);
-Ordering reorder_kcache(const Mesh& mesh, const ReorderParams& params);
 Ordering reorder_morton(const Mesh& mesh, const ReorderParams& params);
 Ordering reorder_hilbert(const Mesh& mesh, const ReorderParams& params);
 Ordering reorder_grid(const Mesh& mesh, const ReorderParams& params);

@@ -4,6 +4,8 @@
 #include <numeric>
 
 #include "core/error.h"
+#include "reorder/kcache.h"
+#include "reorder/nvstrip.h"
 #include "reorder/ordering.h"
 #include "reorder/texgroup.h"
 
@@ -20,7 +22,9 @@ const std::vector<ReorderAlgorithm>& reorder_algorithms() {
       {"morton", "Morton order of triangle centroids", reorder_morton},
       {"hilbert", "Hilbert order of triangle centroids (Skilling 2004)", reorder_hilbert},
       {"grid", "Castano 2009, optimal grid rendering (regular grids only)", reorder_grid},
-      {"strip", "cache-unaware sequential strips with swaps (Evans et al. 1996 / NvTriStrip style)", reorder_strip},
+      {"strip", "cache-unaware sequential strips with swaps, fewest vertices sent (Evans et al. 1996)", reorder_strip},
+      {"nvstrip", "NvTriStrip (NVIDIA), experiments of parallel strips, pieces of K - 6 faces ordered for the cache",
+       reorder_nvstrip},
       {"greedy", "Hoppe 1999, greedy strip-growing with lookahead cache simulation", reorder_greedy},
       {"local", "Hoppe 1999, local optimization (reflect/insert perturbations) of the greedy order", reorder_local},
       {"texgroup", "Yang, Mitra, Huang: faces grouped by texture region, each group by a base algorithm",
