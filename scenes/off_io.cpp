@@ -8,8 +8,8 @@
 #include <cmath>
 #include <string>
 
-#include "core/atomic_file.h"
 #include "scenes/mesh_io.h"
+#include "scenes/mesh_text_writer.h"
 #include "scenes/text_parse.h"
 
 namespace rastrace {
@@ -154,25 +154,9 @@ void save_off(const Mesh& mesh, const std::string& path) {
   out += ' ';
   append_number(out, mesh.face_count());
   out += " 0\n";
-  for (const auto& p : mesh.positions) {
-    append_number(out, p.x);
-    out += ' ';
-    append_number(out, p.y);
-    out += ' ';
-    append_number(out, p.z);
-    out += '\n';
-  }
-  for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-    out += "3 ";
-    append_number(out, mesh.indices[i]);
-    out += ' ';
-    append_number(out, mesh.indices[i + 1]);
-    out += ' ';
-    append_number(out, mesh.indices[i + 2]);
-    out += '\n';
-  }
-  write_file_atomically(
-      path, [&](std::ostream& stream) { stream.write(out.data(), static_cast<std::streamsize>(out.size())); });
+  append_attribute_lines(out, "", mesh.positions);
+  append_triangle_lines(out, mesh.indices);
+  write_whole_file(path, out);
 }
 
 }  // namespace rastrace

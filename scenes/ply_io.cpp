@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "core/atomic_file.h"
 #include "core/error.h"
 #include "scenes/mesh_io.h"
+#include "scenes/mesh_text_writer.h"
 #include "scenes/text_parse.h"
 
 namespace rastrace {
@@ -440,26 +440,12 @@ void save_ply(const Mesh& mesh, const std::string& path, bool ascii) {
   const std::size_t floats_per_vertex = 3 + (normals ? 3 : 0) + (uvs ? 2 : 0);
   if (ascii) {
     for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
-      float values[8];
-      std::size_t n = 0;
-      values[n++] = mesh.positions[v].x, values[n++] = mesh.positions[v].y, values[n++] = mesh.positions[v].z;
-      if (normals) values[n++] = mesh.normals[v].x, values[n++] = mesh.normals[v].y, values[n++] = mesh.normals[v].z;
-      if (uvs) values[n++] = mesh.uvs[v].x, values[n++] = mesh.uvs[v].y;
-      for (std::size_t i = 0; i < n; ++i) {
-        if (i) out += ' ';
-        append_number(out, values[i]);
-      }
+      append_components(out, mesh.positions[v]);
+      if (normals) out += ' ', append_components(out, mesh.normals[v]);
+      if (uvs) out += ' ', append_components(out, mesh.uvs[v]);
       out += '\n';
     }
-    for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-      out += "3 ";
-      append_number(out, mesh.indices[i]);
-      out += ' ';
-      append_number(out, mesh.indices[i + 1]);
-      out += ' ';
-      append_number(out, mesh.indices[i + 2]);
-      out += '\n';
-    }
+    append_triangle_lines(out, mesh.indices);
   } else {
     const std::size_t header_size = out.size();
     out.resize(header_size + mesh.vertex_count() * floats_per_vertex * 4 + mesh.face_count() * 13);
@@ -486,8 +472,7 @@ void save_ply(const Mesh& mesh, const std::string& path, bool ascii) {
       }
     }
   }
-  write_file_atomically(
-      path, [&](std::ostream& stream) { stream.write(out.data(), static_cast<std::streamsize>(out.size())); });
+  write_whole_file(path, out);
 }
 
 }  // namespace rastrace
