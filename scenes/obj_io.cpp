@@ -12,9 +12,9 @@
 #include <unordered_map>
 #include <vector>
 
-#include "core/atomic_file.h"
 #include "core/error.h"
 #include "scenes/mesh_io.h"
+#include "scenes/mesh_text_writer.h"
 #include "scenes/text_parse.h"
 
 namespace rastrace {
@@ -292,11 +292,7 @@ void save_obj(const Mesh& mesh, const std::string& path) {
         if (names[k] == name) name += "_" + std::to_string(m);
       names.push_back(name);
       mtl += "newmtl " + name + "\nKd ";
-      append_number(mtl, material.diffuse.r);
-      mtl += ' ';
-      append_number(mtl, material.diffuse.g);
-      mtl += ' ';
-      append_number(mtl, material.diffuse.b);
+      append_components(mtl, glm::vec3(material.diffuse));
       mtl += "\nd ";
       append_number(mtl, material.diffuse.a);
       mtl += '\n';
@@ -308,38 +304,13 @@ void save_obj(const Mesh& mesh, const std::string& path) {
         mtl += "# procedural texture: not expressible in MTL\n";
       }
     }
-    write_file_atomically(
-        mtl_path, [&](std::ostream& stream) { stream.write(mtl.data(), static_cast<std::streamsize>(mtl.size())); });
+    write_whole_file(mtl_path, mtl);
     out += "mtllib " + mtl_path.filename().string() + "\n";
   }
 
-  for (const auto& p : mesh.positions) {
-    out += "v ";
-    append_number(out, p.x);
-    out += ' ';
-    append_number(out, p.y);
-    out += ' ';
-    append_number(out, p.z);
-    out += '\n';
-  }
-  if (uvs)
-    for (const auto& t : mesh.uvs) {
-      out += "vt ";
-      append_number(out, t.x);
-      out += ' ';
-      append_number(out, t.y);
-      out += '\n';
-    }
-  if (normals)
-    for (const auto& n : mesh.normals) {
-      out += "vn ";
-      append_number(out, n.x);
-      out += ' ';
-      append_number(out, n.y);
-      out += ' ';
-      append_number(out, n.z);
-      out += '\n';
-    }
+  append_attribute_lines(out, "v ", mesh.positions);
+  if (uvs) append_attribute_lines(out, "vt ", mesh.uvs);
+  if (normals) append_attribute_lines(out, "vn ", mesh.normals);
   std::int64_t written_material = -1;
   for (std::size_t f = 0; f < mesh.face_count(); ++f) {
     if (!names.empty() && static_cast<std::int64_t>(mesh.material_of(f)) != written_material) {
@@ -365,8 +336,7 @@ void save_obj(const Mesh& mesh, const std::string& path) {
     }
     out += '\n';
   }
-  write_file_atomically(
-      path, [&](std::ostream& stream) { stream.write(out.data(), static_cast<std::streamsize>(out.size())); });
+  write_whole_file(path, out);
 }
 
 }  // namespace rastrace

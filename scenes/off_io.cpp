@@ -8,8 +8,9 @@
 #include <cmath>
 #include <string>
 
-#include "core/atomic_file.h"
 #include "scenes/mesh_io.h"
+#include "scenes/mesh_text_writer.h"
+#include "scenes/polygon_fan.h"
 #include "scenes/text_parse.h"
 
 namespace rastrace {
@@ -113,6 +114,7 @@ Mesh load_off(const std::string& path) {
 
   const auto faces = static_cast<std::size_t>(face_count);
   mesh.indices.reserve(std::min(faces, plausible) * 3);
+  PolygonFan fan(mesh.indices, static_cast<std::uint64_t>(vertex_count));
   for (std::size_t f = 0; f < faces; ++f) {
     if (!next_content_line(lines, line))
       lines.fail("file ends after " + std::to_string(f) + " of " + std::to_string(faces) + " faces");
@@ -122,22 +124,14 @@ Mesh load_off(const std::string& path) {
     if (!parse_number(token, n) || n < 3)
       lines.fail("face " + std::to_string(f) + ": expected the number of its vertices (at least 3), found " +
                  describe_token(token));
-    std::uint32_t first = 0, previous = 0;
+    fan.begin_polygon();
     for (std::int64_t i = 0; i < n; ++i) {
       token = next_token(rest);
       std::int64_t index = 0;
       if (!parse_number(token, index))
         lines.fail("face " + std::to_string(f) + ": expected " + std::to_string(n) + " vertex indices, found " +
                    describe_token(token) + " at position " + std::to_string(i));
-      if (index < 0 || index >= vertex_count)
-        lines.fail("face index " + std::to_string(index) +
-                   (index < 0 ? " < 0" : " >= vertex count " + std::to_string(vertex_count)));
-      const auto current = static_cast<std::uint32_t>(index);
-      if (i == 0)
-        first = current;
-      else if (i >= 2)
-        mesh.indices.insert(mesh.indices.end(), {first, previous, current});
-      previous = current;
+      if (!fan.add(index)) lines.fail(fan.range_error(index));
     }
   }
   if (next_content_line(lines, line))
@@ -154,25 +148,9 @@ void save_off(const Mesh& mesh, const std::string& path) {
   out += ' ';
   append_number(out, mesh.face_count());
   out += " 0\n";
-  for (const auto& p : mesh.positions) {
-    append_number(out, p.x);
-    out += ' ';
-    append_number(out, p.y);
-    out += ' ';
-    append_number(out, p.z);
-    out += '\n';
-  }
-  for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-    out += "3 ";
-    append_number(out, mesh.indices[i]);
-    out += ' ';
-    append_number(out, mesh.indices[i + 1]);
-    out += ' ';
-    append_number(out, mesh.indices[i + 2]);
-    out += '\n';
-  }
-  write_file_atomically(
-      path, [&](std::ostream& stream) { stream.write(out.data(), static_cast<std::streamsize>(out.size())); });
+  append_attribute_lines(out, "", mesh.positions);
+  append_triangle_lines(out, mesh.indices);
+  write_whole_file(path, out);
 }
 
 }  // namespace rastrace

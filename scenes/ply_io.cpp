@@ -12,9 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "core/atomic_file.h"
 #include "core/error.h"
 #include "scenes/mesh_io.h"
+#include "scenes/mesh_text_writer.h"
+#include "scenes/polygon_fan.h"
 #include "scenes/text_parse.h"
 
 namespace rastrace {
@@ -284,25 +285,11 @@ class BinaryReader {
     return 0.0;
   }
   std::int64_t integer(PlyType type, const char* what) {
-    switch (type) {
-      case PlyType::Int8:
-        return read<std::int8_t>(what);
-      case PlyType::UInt8:
-        return read<std::uint8_t>(what);
-      case PlyType::Int16:
-        return read<std::int16_t>(what);
-      case PlyType::UInt16:
-        return read<std::uint16_t>(what);
-      case PlyType::Int32:
-        return read<std::int32_t>(what);
-      case PlyType::UInt32:
-        return read<std::uint32_t>(what);
-      default: {
-        const double d = scalar(type, what);
-        if (!(d == std::floor(d)) || std::fabs(d) > 9.0e15) fail(std::string("expected an integer value for ") + what);
-        return static_cast<std::int64_t>(d);
-      }
-    }
+    const double d = scalar(type, what);
+    // Every 8- to 32-bit integer is exact in a double; a float type must hold a whole number.
+    if (!is_integer(type) && (!(d == std::floor(d)) || std::fabs(d) > 9.0e15))
+      fail(std::string("expected an integer value for ") + what);
+    return static_cast<std::int64_t>(d);
   }
   bool at_end() const { return position_ >= data_.size(); }
   std::size_t position() const { return position_; }
@@ -331,7 +318,7 @@ class BinaryReader {
 template <typename Reader>
 void read_body(Reader& reader, const Header& header, const Element* vertex_element, bool normals, bool uvs,
                Mesh& mesh) {
-  const std::uint64_t vertex_count = vertex_element->count;
+  PolygonFan fan(mesh.indices, vertex_element->count);
   for (const Element& element : header.elements) {
     const bool is_vertex = &element == vertex_element;
     for (std::uint64_t record = 0; record < element.count; ++record) {
@@ -346,18 +333,10 @@ void read_body(Reader& reader, const Header& header, const Element* vertex_eleme
             if (n < 3)
               reader.fail("face " + std::to_string(record) + ": expected at least 3 vertex indices, found " +
                           std::to_string(n));
-            std::uint32_t first = 0, previous = 0;
+            fan.begin_polygon();
             for (std::int64_t i = 0; i < n; ++i) {
               const std::int64_t index = reader.integer(property.type, what);
-              if (index < 0 || static_cast<std::uint64_t>(index) >= vertex_count)
-                reader.fail("face index " + std::to_string(index) +
-                            (index < 0 ? " < 0" : " >= vertex count " + std::to_string(vertex_count)));
-              const auto current = static_cast<std::uint32_t>(index);
-              if (i == 0)
-                first = current;
-              else if (i >= 2)
-                mesh.indices.insert(mesh.indices.end(), {first, previous, current});
-              previous = current;
+              if (!fan.add(index)) reader.fail(fan.range_error(index));
             }
           } else {
             for (std::int64_t i = 0; i < n; ++i) reader.scalar(property.type, what);
@@ -440,26 +419,12 @@ void save_ply(const Mesh& mesh, const std::string& path, bool ascii) {
   const std::size_t floats_per_vertex = 3 + (normals ? 3 : 0) + (uvs ? 2 : 0);
   if (ascii) {
     for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
-      float values[8];
-      std::size_t n = 0;
-      values[n++] = mesh.positions[v].x, values[n++] = mesh.positions[v].y, values[n++] = mesh.positions[v].z;
-      if (normals) values[n++] = mesh.normals[v].x, values[n++] = mesh.normals[v].y, values[n++] = mesh.normals[v].z;
-      if (uvs) values[n++] = mesh.uvs[v].x, values[n++] = mesh.uvs[v].y;
-      for (std::size_t i = 0; i < n; ++i) {
-        if (i) out += ' ';
-        append_number(out, values[i]);
-      }
+      append_components(out, mesh.positions[v]);
+      if (normals) out += ' ', append_components(out, mesh.normals[v]);
+      if (uvs) out += ' ', append_components(out, mesh.uvs[v]);
       out += '\n';
     }
-    for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
-      out += "3 ";
-      append_number(out, mesh.indices[i]);
-      out += ' ';
-      append_number(out, mesh.indices[i + 1]);
-      out += ' ';
-      append_number(out, mesh.indices[i + 2]);
-      out += '\n';
-    }
+    append_triangle_lines(out, mesh.indices);
   } else {
     const std::size_t header_size = out.size();
     out.resize(header_size + mesh.vertex_count() * floats_per_vertex * 4 + mesh.face_count() * 13);
@@ -486,8 +451,7 @@ void save_ply(const Mesh& mesh, const std::string& path, bool ascii) {
       }
     }
   }
-  write_file_atomically(
-      path, [&](std::ostream& stream) { stream.write(out.data(), static_cast<std::streamsize>(out.size())); });
+  write_whole_file(path, out);
 }
 
 }  // namespace rastrace
