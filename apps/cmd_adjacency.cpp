@@ -31,9 +31,9 @@
 #include "pipeline/edge_stage.h"
 #include "pipeline/pipeline.h"
 #include "raster/framebuffer.h"
-#include "reorder/adjacency_bound.h"
-#include "reorder/adjacency_build.h"
-#include "reorder/adjacency_order.h"
+#include "reorder/adjacency/bound.h"
+#include "reorder/adjacency/build.h"
+#include "reorder/adjacency/order.h"
 #include "reorder/ordering.h"
 
 namespace rastrace {

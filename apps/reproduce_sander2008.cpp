@@ -5,9 +5,9 @@
 // spirit.
 #include "apps/reproduce.h"
 #include "cache_sim/vertex_cache.h"
-#include "reorder/adjacency_bound.h"
-#include "reorder/adjacency_build.h"
-#include "reorder/adjacency_order.h"
+#include "reorder/adjacency/bound.h"
+#include "reorder/adjacency/build.h"
+#include "reorder/adjacency/order.h"
 #include "scenes/mesh_io.h"
 
 namespace rastrace {

@@ -5,8 +5,8 @@
 #include <memory>
 #include <string>
 
-#include "reorder/adjacency_bound.h"
-#include "reorder/adjacency_build.h"
+#include "reorder/adjacency/bound.h"
+#include "reorder/adjacency/build.h"
 #include "scenes/mesh_io.h"
 #include "tests/support/test_data.h"
 
