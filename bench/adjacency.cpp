@@ -4,9 +4,9 @@
 // 9.33 s, fast 0.023 s.
 #include <benchmark/benchmark.h>
 
-#include "reorder/adjacency_bound.h"
-#include "reorder/adjacency_build.h"
-#include "reorder/adjacency_order.h"
+#include "reorder/adjacency/bound.h"
+#include "reorder/adjacency/build.h"
+#include "reorder/adjacency/order.h"
 #include "scenes/mesh_io.h"
 
 namespace rastrace {

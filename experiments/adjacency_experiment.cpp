@@ -9,8 +9,8 @@
 
 #include "cache_sim/vertex_cache.h"
 #include "core/error.h"
-#include "reorder/adjacency_bound.h"
-#include "reorder/adjacency_build.h"
+#include "reorder/adjacency/bound.h"
+#include "reorder/adjacency/build.h"
 #include "reorder/ordering.h"
 
 namespace rastrace {

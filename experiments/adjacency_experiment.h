@@ -23,7 +23,7 @@
 #include "pipeline/edge_stage.h"
 #include "pipeline/pipeline.h"
 #include "raster/framebuffer.h"
-#include "reorder/adjacency_order.h"
+#include "reorder/adjacency/order.h"
 #include "scenes/mesh.h"
 
 namespace rastrace {

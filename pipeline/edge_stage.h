@@ -1,5 +1,5 @@
 // The edge stage for triangle-with-adjacency primitives (Sander, Nehab, Chlamtac, Hoppe 2008):
-// what a geometry shader does with the primitives of reorder/adjacency_encode.h, as a
+// what a geometry shader does with the primitives of reorder/adjacency/encode.h, as a
 // PrimitiveHook of the pipeline (pipeline/pipeline.h).
 //
 // Per 6-index primitive (i0 .. i5; cover face (i0, i2, i4); position p is the edge i[2p] ->

@@ -1,14 +1,14 @@
-// Triangle strips: turning a face order into a sequential strip stream, and counting what a strip
-// stream costs.
+// The strip stream: turning a face order into a sequential strip stream, and counting what a strip
+// stream costs. The `strip` stripifier (stripifier.cpp), `greedy` and `local` all emit through it.
 //
-// Representation (used by `strip`, `greedy` and `local`): one GL triangle strip with primitive
-// restart (Ordering::restart_index = kStripRestart). Consecutive faces of the order that are
-// oriented neighbours (MeshTopology::face_neighbors) continue the strip: one new index, or two when
-// the strip turns the "wrong" way for a sequential strip (a swap, emulated by repeating the pivot
-// vertex, which makes one degenerate triangle: "u w u n" draws (w, u, n) after (.., u, w)). Any
-// other pair of consecutive faces restarts the strip. Every drawn triangle is one mesh face with
-// its original winding (GL's alternating strip winding and the repeated pivot keep consistently
-// oriented neighbours consistent), in the order given.
+// Representation: one GL triangle strip with primitive restart (Ordering::restart_index =
+// kStripRestart). Consecutive faces of the order that are oriented neighbours
+// (MeshTopology::face_neighbors) continue the strip: one new index, or two when the strip turns
+// the "wrong" way for a sequential strip (a swap, emulated by repeating the pivot vertex, which
+// makes one degenerate triangle: "u w u n" draws (w, u, n) after (.., u, w)). Any other pair of
+// consecutive faces restarts the strip. Every drawn triangle is one mesh face with its original
+// winding (GL's alternating strip winding and the repeated pivot keep consistently oriented
+// neighbours consistent), in the order given.
 //
 // Counts (Hoppe 1999 section 2.1; Yang, Mitra, Huang, Table 1 after Evans et al.):
 // - vertices sent (Yang et al.'s "cost", "the number of vertex count for each swap and vertex
@@ -62,28 +62,5 @@ inline bool strip_continues(const Mesh& mesh, const MeshTopology& topology, std:
   const std::uint32_t* vb = mesh.indices.data() + 3 * std::size_t(b);
   return va[0] != va[1] && va[1] != va[2] && va[0] != va[2] && vb[0] != vb[1] && vb[1] != vb[2] && vb[0] != vb[2];
 }
-
-// The `strip` algorithm: a cache-unaware stripifier minimizing vertices sent, in the spirit of
-// Evans et al. (SGI tomesh greedy with swaps) and NvTriStrip (experiments):
-//  1. grow strips from a face with the fewest unvisited neighbours (Evans et al.'s SGI start);
-//     for the 4 most recent such faces, each of the three start edges and two growth rules
-//     (fewest unvisited neighbours first; no swap first, then fewest neighbours), keep the strip
-//     sending the fewest vertices per triangle, counting the faces it isolates as 3-vertex strips;
-//  2. improve the strips as a path cover of the face graph, whose cost is local (2 per strip, 1
-//     per swap: a link where four consecutive faces fan around one vertex, 1 when a strip's
-//     second face turns against the first face's winding in both directions). Lin-Kernighan
-//     style chains of up to 4 steps from every strip end: link the end to a neighbour; if that
-//     ends a strip the two join, else the neighbour drops one of its links and that face goes on
-//     (Stewart's tunnelling; a reflection within the end's own strip). Also every swap's link is
-//     cut and a chain from either side must pay for it. A change is kept when it lowers the cost;
-//     passes over the faces whose neighbourhood changed repeat until none does (at most 64
-//     passes; 2-5 on the test meshes). Deterministic, no time budget: the parameters are unused.
-//  3. each strip is sent from its cheaper end, strips in the order they were first built, with
-//     an explicit restart between strips.
-// CGAL's meshes: triceratops 6,820 vertices for 5,660 triangles (Yang et al., Table 1: 6,911 with
-// Evans et al.'s strips, which need not keep the winding), fandisk 14,457 for 12,946, bunny00
-// 91,460 for 75,408; about 1.1-1.25 vertices per triangle in general. Bounded work per face
-// and pass (plus re-walking the strips a change touches): bunny00 in about 0.3 s of CPU.
-Ordering reorder_strip(const Mesh& mesh, const ReorderParams& params);
 
 }  // namespace rastrace

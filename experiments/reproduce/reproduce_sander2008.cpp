@@ -1,13 +1,13 @@
 // Sander, Nehab, Chlamtac, Hoppe 2008, Table 1: triangle-with-adjacency primitives at a FIFO of 24.
-// C/B, and CM/V with the gain for the careful and fast orderings (reorder/adjacency_order.h), over
+// C/B, and CM/V with the gain for the careful and fast orderings (reorder/adjacency/order.h), over
 // both baselines: kcache on the cover faces, and kcache on the whole mesh (baseline-mesh). The paper's fandisk has
 // 9,926 faces and its bunny 69,473; CGAL's copies have 12,946 and 75,408, so the rows compare like for like only in
 // spirit.
 #include "cache_sim/vertex_cache.h"
 #include "experiments/reproduce/reproduce.h"
-#include "reorder/adjacency_bound.h"
-#include "reorder/adjacency_build.h"
-#include "reorder/adjacency_order.h"
+#include "reorder/adjacency/bound.h"
+#include "reorder/adjacency/build.h"
+#include "reorder/adjacency/order.h"
 #include "scenes/mesh_io.h"
 
 namespace rastrace {
@@ -46,7 +46,7 @@ std::vector<ReproducedFigure> reproduce_sander2008() {
   for (const Row& row : rows) {
     const std::string figure = std::string(row.name) + ", cache 24: ";
     const std::string gain_note =
-        std::string(row.note) + "; gain over " + to_string(AdjacencyOrder::Baseline) + " (reorder/adjacency_order.h)";
+        std::string(row.note) + "; gain over " + to_string(AdjacencyOrder::Baseline) + " (reorder/adjacency/order.h)";
     const std::string mesh_gain_note = std::string(row.note) + "; gain over " +
                                        to_string(AdjacencyOrder::BaselineMesh) + " (kcache on the whole mesh)";
     if (!*row.our_mesh) {

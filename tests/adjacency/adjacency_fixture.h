@@ -6,8 +6,8 @@
 #include <memory>
 #include <string>
 
-#include "reorder/adjacency_bound.h"
-#include "reorder/adjacency_build.h"
+#include "reorder/adjacency/bound.h"
+#include "reorder/adjacency/build.h"
 #include "tests/support/test_meshes.h"
 
 namespace rastrace::testing {

@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "adjacency_fixture.h"
-#include "reorder/adjacency_assign.h"
-#include "reorder/adjacency_encode.h"
+#include "reorder/adjacency/assign.h"
+#include "reorder/adjacency/encode.h"
 #include "reorder/mesh_topology.h"
 #include "scenes/procedural.h"
 

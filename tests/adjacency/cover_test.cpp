@@ -1,8 +1,8 @@
 #include <gtest/gtest.h>
 
 #include "adjacency_fixture.h"
-#include "reorder/adjacency_bound.h"
-#include "reorder/adjacency_cover.h"
+#include "reorder/adjacency/bound.h"
+#include "reorder/adjacency/cover.h"
 #include "scenes/procedural.h"
 
 namespace rastrace {

@@ -9,7 +9,7 @@
 #include "adjacency_fixture.h"
 #include "cache_sim/vertex_cache.h"
 #include "experiments/adjacency_experiment.h"
-#include "reorder/adjacency_order.h"
+#include "reorder/adjacency/order.h"
 #include "reorder/mesh_topology.h"
 #include "scenes/procedural.h"
 

@@ -7,7 +7,7 @@
 
 #include "adjacency_fixture.h"
 #include "cache_sim/vertex_cache.h"
-#include "reorder/adjacency_order.h"
+#include "reorder/adjacency/order.h"
 #include "reorder/ordering.h"
 
 namespace rastrace {

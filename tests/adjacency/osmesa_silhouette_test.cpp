@@ -20,7 +20,7 @@
 
 #include "adjacency_fixture.h"
 #include "experiments/adjacency_experiment.h"
-#include "reorder/adjacency_order.h"
+#include "reorder/adjacency/order.h"
 
 namespace rastrace {
 namespace {

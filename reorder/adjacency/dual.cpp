@@ -1,4 +1,4 @@
-#include "reorder/adjacency_dual.h"
+#include "reorder/adjacency/dual.h"
 
 namespace rastrace {
 

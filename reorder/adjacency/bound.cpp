@@ -1,10 +1,10 @@
-#include "reorder/adjacency_bound.h"
+#include "reorder/adjacency/bound.h"
 
 #include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
-#include "reorder/adjacency_matching.h"
+#include "reorder/adjacency/matching.h"
 
 namespace rastrace {
 

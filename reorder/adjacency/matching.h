@@ -1,9 +1,9 @@
 // Minimum-weight perfect matching on a general graph, through LEMON's
 // MaxWeightedPerfectMatching (Edmonds' blossom algorithm with fractional initialisation). Used by
-// the cover lower bound (reorder/adjacency_bound.h).
+// the cover lower bound (reorder/adjacency/bound.h).
 //
 // LEMON 1.3 calls std::allocator::construct, which C++20 removed, so this file is compiled as
-// C++17 (see reorder/CMakeLists.txt) and its interface uses nothing newer.
+// C++17 (see reorder/adjacency/CMakeLists.txt) and its interface uses nothing newer.
 #pragma once
 
 #include <cstdint>

@@ -1,6 +1,6 @@
 // Orderings of triangle-with-adjacency primitives for the post-transform vertex cache (Sander,
 // Nehab, Chlamtac, Hoppe 2008, section 6). Each returns a permutation of the primitives;
-// apply it with permute_primitives (reorder/adjacency_encode.h). All are deterministic.
+// apply it with permute_primitives (reorder/adjacency/encode.h). All are deterministic.
 //
 // - careful: the extension of Lin and Yu 2006 (K-Cache-Reorder). A simulated FIFO of
 //   cache_size entries is kept; every step considers each cached vertex that still has
@@ -35,7 +35,7 @@
 #include <string>
 #include <vector>
 
-#include "reorder/adjacency_encode.h"
+#include "reorder/adjacency/encode.h"
 #include "scenes/mesh.h"
 
 namespace rastrace {

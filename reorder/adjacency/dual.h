@@ -2,7 +2,7 @@
 // Hoppe 2008, "Efficient traversal of mesh edges using adjacency primitives", section 3): one
 // dual vertex per face, one dual edge per pair of faces sharing a mesh edge.
 //
-// Conventions (shared by every reorder/adjacency_* file):
+// Conventions (shared by every reorder/adjacency/* file):
 // - Slot i of face f is its edge from vertex i to vertex (i+1)%3, as in reorder/mesh_topology.h.
 // - A slot with a neighbour is an interior edge (a dual edge). A slot of a proper face without a
 //   neighbour is a boundary edge: a hole's rim, or a face left unpaired at a non-manifold or

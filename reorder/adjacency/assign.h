@@ -19,7 +19,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "reorder/adjacency_dual.h"
+#include "reorder/adjacency/dual.h"
 
 namespace rastrace {
 

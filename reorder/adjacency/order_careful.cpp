@@ -1,10 +1,10 @@
 // The "careful" ordering of adjacency primitives: K-Cache-Reorder (Lin and Yu 2006) extended as in
 // Sander, Nehab, Chlamtac, Hoppe 2008, section 6, with a two-step look-ahead. See
-// reorder/adjacency_order.h.
+// reorder/adjacency/order.h.
 #include <algorithm>
 #include <stdexcept>
 
-#include "reorder/adjacency_order.h"
+#include "reorder/adjacency/order.h"
 
 namespace rastrace {
 namespace {

@@ -16,13 +16,13 @@
 // dropped without uncovering an edge.
 //
 // On real meshes the cover holds 52-57% of the faces and lies within 2-4% of the lower bound of
-// reorder/adjacency_bound.h; about 20 iterations per face reach that.
+// reorder/adjacency/bound.h; about 20 iterations per face reach that.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
-#include "reorder/adjacency_dual.h"
+#include "reorder/adjacency/dual.h"
 
 namespace rastrace {
 

@@ -1,11 +1,11 @@
 // The baseline orderings of adjacency primitives: an off-the-shelf triangle method (kcache, Lin and
 // Yu 2006) applied to the cover faces (`baseline`) or to the whole mesh (`baseline-mesh`), as
-// Sander et al. 2008 compare against. See reorder/adjacency_order.h.
+// Sander et al. 2008 compare against. See reorder/adjacency/order.h.
 #include <numeric>
 #include <stdexcept>
 
 #include "core/error.h"
-#include "reorder/adjacency_order.h"
+#include "reorder/adjacency/order.h"
 #include "reorder/ordering.h"
 
 namespace rastrace {

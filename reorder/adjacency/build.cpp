@@ -1,4 +1,4 @@
-#include "reorder/adjacency_build.h"
+#include "reorder/adjacency/build.h"
 
 namespace rastrace {
 

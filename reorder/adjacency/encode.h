@@ -21,8 +21,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "reorder/adjacency_assign.h"
-#include "reorder/adjacency_dual.h"
+#include "reorder/adjacency/assign.h"
+#include "reorder/adjacency/dual.h"
 
 namespace rastrace {
 

@@ -18,7 +18,7 @@
 
 #include <cstdint>
 
-#include "reorder/adjacency_dual.h"
+#include "reorder/adjacency/dual.h"
 
 namespace rastrace {
 

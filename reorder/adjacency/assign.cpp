@@ -1,4 +1,4 @@
-#include "reorder/adjacency_assign.h"
+#include "reorder/adjacency/assign.h"
 
 #include <chrono>
 #include <limits>

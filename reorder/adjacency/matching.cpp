@@ -1,4 +1,4 @@
-#include "reorder/adjacency_matching.h"
+#include "reorder/adjacency/matching.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "reorder/adjacency_cover.h"
+#include "reorder/adjacency/cover.h"
 
 #include <chrono>
 

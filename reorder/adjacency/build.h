@@ -1,14 +1,14 @@
 // The whole construction of Sander, Nehab, Chlamtac, Hoppe 2008 in one call: dual graph, cover
-// (reorder/adjacency_cover.h), restricted assignment (reorder/adjacency_assign.h) and the
-// primitives in cover-face order (reorder/adjacency_encode.h). Order them with
-// reorder/adjacency_order.h. The lower bound (reorder/adjacency_bound.h) is separate: it is only
+// (reorder/adjacency/cover.h), restricted assignment (reorder/adjacency/assign.h) and the
+// primitives in cover-face order (reorder/adjacency/encode.h). Order them with
+// reorder/adjacency/order.h. The lower bound (reorder/adjacency/bound.h) is separate: it is only
 // needed to judge the cover.
 #pragma once
 
-#include "reorder/adjacency_assign.h"
-#include "reorder/adjacency_cover.h"
-#include "reorder/adjacency_dual.h"
-#include "reorder/adjacency_encode.h"
+#include "reorder/adjacency/assign.h"
+#include "reorder/adjacency/cover.h"
+#include "reorder/adjacency/dual.h"
+#include "reorder/adjacency/encode.h"
 
 namespace rastrace {
 

@@ -1,8 +1,8 @@
 // The "fast" ordering of adjacency primitives: Tipsy (Sander, Nehab, Barczak 2007) extended as in
-// Sander, Nehab, Chlamtac, Hoppe 2008, section 6. See reorder/adjacency_order.h.
+// Sander, Nehab, Chlamtac, Hoppe 2008, section 6. See reorder/adjacency/order.h.
 #include <stdexcept>
 
-#include "reorder/adjacency_order.h"
+#include "reorder/adjacency/order.h"
 
 namespace rastrace {
 

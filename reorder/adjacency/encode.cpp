@@ -1,4 +1,4 @@
-#include "reorder/adjacency_encode.h"
+#include "reorder/adjacency/encode.h"
 
 #include <stdexcept>
 
