@@ -7,11 +7,11 @@
 #include "cache_sim/live_bank_sink.h"
 #include "pipeline/pipeline.h"
 #include "pipeline/render_scene.h"
-#include "tests/support/tee_sink.h"
 #include "tests/support/temp_dir.h"
 #include "tests/support/textured_bunny.h"
 #include "traces/memory_sink.h"
 #include "traces/replay_file.h"
+#include "traces/tee_sink.h"
 #include "traces/trace_writer.h"
 
 namespace rastrace {
@@ -45,13 +45,7 @@ CacheBankConfig bank_config() {
 
 TEST(LiveReplay, LiveCacheBankEqualsReplayOfTheWrittenTraceToTheMiss) {
   const Scene scene = textured_bunny();
-  TextureLevels levels;
-  for (const Texture& t : scene.textures) {
-    std::vector<LevelSize> sizes;
-    for (const Image& image : t.levels)
-      sizes.push_back({static_cast<std::uint32_t>(image.width), static_cast<std::uint32_t>(image.height)});
-    levels.push_back(sizes);
-  }
+  const TextureLevels levels = texture_levels(scene);
   const testing::TempDir dir;
   const std::string path = dir.file("live.rtrace");
   TraceMetadata metadata;
@@ -65,7 +59,7 @@ TEST(LiveReplay, LiveCacheBankEqualsReplayOfTheWrittenTraceToTheMiss) {
   TraceWriterOptions small_chunks;
   small_chunks.chunk_records = 4096;  // many chunks: chunk boundaries must not change anything
   TraceWriter writer(path, metadata, small_chunks);
-  testing::TeeSink tee(live, writer);
+  TeeSink tee({&live, &writer});
   RenderOptions options;
   options.pipeline.raster.traversal = Traversal::Tiled8;
   const RenderResult result = render_scene(scene, options, &tee);
@@ -114,7 +108,7 @@ TEST(LiveReplay, StripRestartingAt0xFFFFFFFFCountsItsRestartsLiveAndReplayed) {
   PipelineStats rendered;
   {
     TraceWriter writer(path, TraceMetadata{});
-    Tee tee(live, writer);
+    TeeSink tee({&live, &writer});
     Framebuffer framebuffer(64, 64);
     Pipeline pipeline(framebuffer, PipelineOptions{}, &tee);
     DrawCall call;
