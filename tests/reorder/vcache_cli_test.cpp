@@ -62,8 +62,9 @@ TEST(VcacheCli, EvictionAccountingPrintsCastanosPublishedCounts) {
 }
 
 TEST(VcacheCli, NoTimeOutputIsByteIdenticalBetweenRuns) {
-  const std::vector<std::string> args = {"vcache",   "grid:12x12", "--algo",   "all",  "--cache",  "12,16",
-                                         "--policy", "fifo,lru",   "--format", "json", "--no-time"};
+  const std::vector<std::string> args = {"vcache",   "grid:12x12", "--algo",
+                                         "all",      "--cache",    "entries=12/16,policy=fifo/lru",
+                                         "--format", "json",       "--no-time"};
   const Result a = run(args), b = run(args);
   ASSERT_EQ(a.exit_code, 0) << a.err;
   EXPECT_EQ(a.out, b.out);
