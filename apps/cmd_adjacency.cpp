@@ -1,4 +1,4 @@
-// `rastrace adjacency MESH [--cache 24] [--order careful|fast|baseline|baseline-mesh|all] [--seed N]
+// `rastrace adjacency MESH [--cache entries=24] [--order careful|fast|baseline|baseline-mesh|all] [--seed N]
 //  [--iterations N] [--format md|csv|latex|json] [-o FILE] [--no-time]`: triangle-with-adjacency
 // primitives (Sander, Nehab, Chlamtac, Hoppe 2008), one table row per ordering
 // (experiments/adjacency_experiment.h). `--order all` adds the naive scheme (one primitive per
@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "cache_sim/cache_spec.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/table.h"
@@ -22,7 +23,8 @@ namespace {
 
 struct AdjacencyOptions {
   std::string mesh;
-  unsigned cache = 24;
+  std::string cache_spec = "entries=24";
+  unsigned cache = 24;  // from cache_spec
   std::string order = "all";
   std::uint64_t seed = 1;
   std::int64_t iterations = -1;
@@ -58,7 +60,6 @@ void write_index_buffer(const std::string& path, const std::vector<std::uint32_t
 
 void run_adjacency(const AdjacencyOptions& options) {
   const TableFormat format = parse_table_format(options.format);
-  if (options.cache == 0) throw InputError("--cache 0: a vertex cache needs at least 1 entry");
   if (options.size < 16 || options.size > 8192)
     throw InputError("--size " + std::to_string(options.size) + ": expected 16..8192");
   std::vector<AdjacencyOrder> orders;
@@ -102,7 +103,8 @@ void add_adjacency_command(CLI::App& app) {
       "adjacency", "Triangle-with-adjacency primitives for edge processing (Sander et al. 2008): cover, bound, orders");
   auto options = std::make_shared<AdjacencyOptions>();
   command->add_option("mesh", options->mesh, "Mesh file, builtin:<scene> or grid:WxH")->required();
-  command->add_option("--cache", options->cache, "FIFO post-transform cache entries")->capture_default_str();
+  command->add_option("--cache", options->cache_spec, "FIFO post-transform cache (cache spec, README): entries=N")
+      ->capture_default_str();
   command->add_option("--order", options->order, "careful, fast, baseline, baseline-mesh or all")
       ->capture_default_str();
   command->add_option("--seed", options->seed, "Seed of the cover's local search")->capture_default_str();
@@ -120,10 +122,17 @@ void add_adjacency_command(CLI::App& app) {
   command->footer(
       "Examples:\n"
       "  rastrace adjacency data/meshes/bunny00.off\n"
-      "  rastrace adjacency data/meshes/fandisk.off --order fast --cache 12 --format json\n"
+      "  rastrace adjacency data/meshes/fandisk.off --order fast --cache entries=12 --format json\n"
       "  rastrace adjacency data/meshes/triceratops.off --order careful -o triceratops.adj.bin\n"
       "  rastrace adjacency data/meshes/bunny00.off --order fast --edges --lines bunny-silhouette.png");
-  command->callback([options] { run_adjacency(*options); });
+  command->callback([options] {
+    const VertexCacheSpec cache = parse_vertex_cache(options->cache_spec, "--cache");
+    if (cache.policy != VertexCachePolicy::Fifo)
+      throw InputError("--cache '" + options->cache_spec + "': the adjacency orders and CM/V are defined for FIFO: " +
+                       "write entries=" + std::to_string(cache.entries) + ",policy=fifo");
+    options->cache = cache.entries;
+    run_adjacency(*options);
+  });
 }
 
 }  // namespace rastrace

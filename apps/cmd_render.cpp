@@ -1,5 +1,5 @@
-// `rastrace render SCENE -o image.png [--trace out.rtrace] [--vcache fifo:16]
-//  [--tcache 16KiB,64B,4way,lru] [--layout block4] [--raster tiled8] [--filter trilinear] [--json]`:
+// `rastrace render SCENE -o image.png [--trace out.rtrace] [--vcache entries=16,policy=fifo]
+//  [--tcache size=16KiB,line=64B,assoc=4,policy=lru,layout=block4] [--raster tiled8] [--filter trilinear] [--json]`:
 // draws a scene with the software pipeline, simulating a post-transform vertex cache and a texture
 // cache live (and writing the trace when asked), and prints what the frame cost: triangles drawn,
 // vertices shaded, ACMR, fragments, texel accesses, texture misses and bytes per fragment.
@@ -27,9 +27,9 @@ struct RenderCommand {
   std::string output;
   std::string depth;
   std::string trace;
-  std::string vcache = "fifo:16";
-  std::string tcache = "16KiB,64B,4way,lru";
-  std::string layout = "block4";
+  std::string vcache = "entries=16,policy=fifo";
+  std::string tcache = "size=16KiB,line=64B,assoc=4,policy=lru,layout=block4";
+  std::string old_layout;  // --layout, replaced by the texture cache's layout key
   std::string format = "md";
   bool json = false;
 };
@@ -40,9 +40,10 @@ void run_render(const RenderCommand& command) {
   const VertexCacheSpec vcache = parse_vcache_spec(command.vcache);
   options.pipeline.cache_policy = vcache.policy;
   options.pipeline.cache_entries = vcache.entries;
-  TextureCacheSpec tcache;
-  tcache.cache = parse_tcache_spec(command.tcache);
-  tcache.layout = parse_layout(command.layout);
+  if (!command.old_layout.empty())
+    throw InputError("--layout '" + command.old_layout + "': write the layout in the texture cache spec, e.g. " +
+                     "--tcache size=16KiB,line=64B,assoc=4,policy=lru,layout=" + command.old_layout);
+  const TextureCacheSpec tcache = parse_tcache_spec(command.tcache);
 
   const Scene scene = load_render_scene(command.flags);
   ReorderParams order_params;
@@ -111,10 +112,11 @@ void add_render_command(CLI::App& app) {
   command->add_option("-o,--output", options->output, "Colour image (PNG, or any format by extension)")->required();
   command->add_option("--depth", options->depth, "Depth buffer as a float EXR");
   command->add_option("--trace", options->trace, "Write the vertex and texel trace (rastrace container)");
-  command->add_option("--vcache", options->vcache, "Post-transform vertex cache POLICY:ENTRIES")->capture_default_str();
-  command->add_option("--tcache", options->tcache, "Texture cache SIZE,LINE,ASSOC,POLICY")->capture_default_str();
-  command->add_option("--layout", options->layout, "Texture memory layout: linear, block2..block16, morton")
+  command->add_option("--vcache", options->vcache, "Post-transform vertex cache (cache spec, README)")
       ->capture_default_str();
+  command->add_option("--tcache", options->tcache, "Texture cache and layout (cache spec, README)")
+      ->capture_default_str();
+  command->add_option("--layout", options->old_layout)->group("");  // the old spelling: an error naming the new
   command->add_option("--lod", options->flags.lod, "LOD scale factor: lengths (GL eq. 8.6) or max_component (8.7)")
       ->capture_default_str();
   command->add_option("--format", options->format, "md, csv, latex or json")->capture_default_str();
@@ -122,8 +124,10 @@ void add_render_command(CLI::App& app) {
   command->footer(
       "Examples:\n"
       "  rastrace render builtin:bunny -o bunny.png\n"
-      "  rastrace render builtin:grid -o grid.png --raster tiled8 --tcache 8KiB,32B,2way,fifo --layout morton --json\n"
-      "  rastrace render builtin:bunny -o bunny.png --order tipsy --vcache fifo:16 --trace bunny.rtrace");
+      "  rastrace render builtin:grid -o grid.png --raster tiled8 --tcache size=8KiB,line=32B,assoc=2,policy=fifo,"
+      "layout=morton --json\n"
+      "  rastrace render builtin:bunny -o bunny.png --order tipsy --vcache entries=16,policy=fifo --trace "
+      "bunny.rtrace");
   command->callback([options] { run_render(*options); });
 }
 

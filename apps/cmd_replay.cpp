@@ -5,80 +5,13 @@
 #include <optional>
 
 #include "apps/commands.h"
+#include "cache_sim/cache_spec.h"
 #include "core/error.h"
 #include "core/progress.h"
 #include "core/units.h"
 #include "experiments/cache_report.h"
 
 namespace rastrace {
-
-namespace {
-
-struct CacheSpec {
-  bool post_transform = false;
-  VertexCacheSpec vertex;
-  CacheConfig cache;
-  LayoutSpec layout;
-  std::optional<SweepSource> source;
-  std::uint32_t stride = 32;
-};
-
-// "size=16KiB,line=64B,assoc=4,policy=lru,layout=block4" or "entries=16,policy=fifo".
-CacheSpec parse_cache_spec(const std::string& text) {
-  CacheSpec spec;
-  std::string policy = "lru", layout = "linear";
-  for (const std::string& item : split_list(text, "--cache")) {
-    const std::size_t eq = item.find('=');
-    if (eq == std::string::npos)
-      throw InputError("--cache '" + text + "': item '" + item +
-                       "': expected key=value (size, line, assoc, policy, layout, "
-                       "texel, align, stride, source, seed, entries)");
-    const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
-    if (key == "entries") {
-      spec.post_transform = true;
-      const std::uint64_t k = parse_count(value, "--cache entries");
-      if (k == 0 || k > 1u << 20) throw InputError("--cache entries=" + value + ": expected 1..1048576");
-      spec.vertex.entries = static_cast<unsigned>(k);
-    } else if (key == "size") {
-      spec.cache.size_bytes = parse_byte_size(value, "--cache size");
-    } else if (key == "line") {
-      spec.cache.line_bytes = static_cast<std::uint32_t>(parse_byte_size(value, "--cache line"));
-    } else if (key == "assoc") {
-      spec.cache.assoc = value == "full" ? 0 : static_cast<std::uint32_t>(parse_count(value, "--cache assoc"));
-      if (value != "full" && spec.cache.assoc == 0)
-        throw InputError("--cache assoc=0: expected a number of ways or 'full'");
-    } else if (key == "policy") {
-      policy = value;
-    } else if (key == "layout") {
-      layout = value;
-    } else if (key == "texel") {
-      spec.layout.texel_bytes = static_cast<std::uint32_t>(parse_byte_size(value, "--cache texel"));
-    } else if (key == "align") {
-      spec.layout.alignment = parse_byte_size(value, "--cache align");
-    } else if (key == "stride") {
-      spec.stride = static_cast<std::uint32_t>(parse_byte_size(value, "--cache stride"));
-    } else if (key == "source") {
-      spec.source = parse_sweep_source(value);
-    } else if (key == "seed") {
-      spec.cache.seed = parse_count(value, "--cache seed");
-    } else {
-      throw InputError("--cache '" + text + "': unknown key '" + key +
-                       "': expected size, line, assoc, policy, layout, texel, align, stride, source, seed or entries");
-    }
-  }
-  if (spec.post_transform) {
-    spec.vertex.policy = parse_vertex_cache_policy(policy);
-  } else {
-    spec.cache.policy = parse_replacement_policy(policy);
-    const LayoutSpec named = parse_layout(layout);
-    spec.layout.kind = named.kind;
-    spec.layout.block = named.block;
-    validate(spec.cache);
-  }
-  return spec;
-}
-
-}  // namespace
 
 void add_replay_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand("replay", "Replay a trace through one or more caches");
@@ -90,10 +23,10 @@ void add_replay_command(CLI::App& app) {
   command->add_option("trace", *trace, "Trace file: rastrace trace (.rtrace), .csv export or Dinero .din")->required();
   command
       ->add_option("--cache", *specs,
-                   "Cache to simulate (repeatable). Byte cache: size=16KiB,line=64B,assoc=4|full,"
-                   "policy=fifo|lru|random|opt,layout=linear|block2..block16|morton[,texel=4B][,align=4KiB]"
-                   "[,source=texel|vertex|address][,stride=32B][,seed=1]. Post-transform vertex cache: "
-                   "entries=16,policy=fifo|lru")
+                   "Caches to simulate (repeatable; cache spec, README; alternatives a/b expand to every "
+                   "combination). Byte cache: size=16KiB,line=64B,assoc=4|full,policy=fifo|lru|random|opt,"
+                   "layout=linear|block2..block16|morton[,texel=4B][,align=4KiB][,source=texel|vertex|address]"
+                   "[,stride=32B][,seed=1]. Post-transform vertex cache: entries=16,policy=fifo|lru")
       ->required();
   command->add_option("--format", *format, "Table format: md, csv, latex or json");
   command->add_option("-o,--output", *output, "Write the table to this file (atomically) instead of stdout");
@@ -112,24 +45,28 @@ void add_replay_command(CLI::App& app) {
     bank.flush_vertex_cache_per_draw = !*keep_vertex_cache;
     std::vector<SweepRow> texture_rows, vertex_buffer_rows, address_rows;
     for (const std::string& text : *specs) {
-      const CacheSpec spec = parse_cache_spec(text);
-      if (spec.post_transform) {
-        bank.vertex.push_back(spec.vertex);
-        continue;
-      }
-      switch (spec.source.value_or(fallback)) {
-        case SweepSource::Texel:
-          bank.texture.push_back({spec.cache, spec.layout});
-          texture_rows.push_back({spec.cache, layout_name(spec.layout), {}});
-          break;
-        case SweepSource::VertexBuffer:
-          bank.vertex_buffer.push_back({spec.cache, spec.stride});
-          vertex_buffer_rows.push_back({spec.cache, "stride" + std::to_string(spec.stride), {}});
-          break;
-        case SweepSource::Address:
-          bank.address.push_back(spec.cache);
-          address_rows.push_back({spec.cache, "-", {}});
-          break;
+      const CacheSpec spec = parse_cache_spec(text, "--cache");
+      for (const VertexCacheSpec& vertex : vertex_caches(spec)) bank.vertex.push_back(vertex);
+      for (const ByteCacheChoice& choice : byte_caches(spec)) {
+        try {
+          validate(choice.cache);
+        } catch (const InputError& e) {
+          throw InputError("--cache '" + text + "': " + e.what());
+        }
+        switch (spec.source.value_or(fallback)) {
+          case SweepSource::Texel:
+            bank.texture.push_back({choice.cache, choice.layout});
+            texture_rows.push_back({choice.cache, layout_name(choice.layout), {}});
+            break;
+          case SweepSource::VertexBuffer:
+            bank.vertex_buffer.push_back({choice.cache, spec.stride});
+            vertex_buffer_rows.push_back({choice.cache, "stride" + std::to_string(spec.stride), {}});
+            break;
+          case SweepSource::Address:
+            bank.address.push_back(choice.cache);
+            address_rows.push_back({choice.cache, "-", {}});
+            break;
+        }
       }
     }
     LiveBankSink sink(bank, summary.metadata.textures);

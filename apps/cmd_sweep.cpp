@@ -1,11 +1,13 @@
 // `rastrace sweep TRACE`: every combination of cache size, line, associativity, policy and layout
 // over one trace, in parallel; a table (md/csv/latex/json) and optionally a miss-rate plot.
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 
 #include "apps/commands.h"
-#include "apps/sweep_flags.h"
+#include "cache_sim/cache_spec.h"
 #include "core/error.h"
 #include "core/units.h"
 #include "experiments/cache_report.h"
@@ -16,57 +18,60 @@ void add_sweep_command(CLI::App& app) {
   CLI::App* command =
       app.add_subcommand("sweep", "Sweep cache sizes, lines, associativities, policies and layouts over a trace");
   struct Options {
-    std::string trace, stride = "32B", source, entries, format = "md", output, plot;
-    SweepFlags sweep;
+    std::string trace, cache = "size=1KiB..64KiB", format = "md", output, plot;
+    // The flags one cache spec replaced: given, they are an error that shows the spec.
+    std::map<std::string, std::string> old_flags;
     unsigned threads = 0;
     bool keep_vertex_cache = false;
   };
   auto o = std::make_shared<Options>();
   command->add_option("trace", o->trace, "Trace file: rastrace trace (.rtrace), .csv export or Dinero .din")
       ->required();
-  add_sweep_flags(*command, o->sweep);
-  command->add_option("--source", o->source,
-                      "Accesses to simulate: texel, vertex (vertex buffer bytes) or address (din); "
-                      "default: what the trace holds");
-  command->add_option("--stride", o->stride, "Vertex size in bytes for --source vertex")->capture_default_str();
-  command->add_option("--entries", o->entries,
-                      "Sweep post-transform vertex caches instead: entry counts, e.g. 4..64 "
-                      "(policies fifo,lru)");
+  command
+      ->add_option("--cache", o->cache,
+                   "Caches to sweep (cache spec, README): alternatives a/b and ranges a..b expand to every "
+                   "combination, e.g. size=1KiB..64KiB,assoc=1/2/4/full,policy=fifo/lru,layout=linear/morton, "
+                   "or entries=4..64,policy=fifo/lru for post-transform vertex caches")
+      ->capture_default_str();
+  static const char* const kOldFlags[] = {"entries", "size",  "line", "assoc",  "policy", "layout",
+                                          "texel",   "align", "seed", "source", "stride"};
+  for (const char* flag : kOldFlags) command->add_option(std::string("--") + flag, o->old_flags[flag])->group("");
   command->add_option("--threads", o->threads, "Worker threads (0: one per core)")->capture_default_str();
   command->add_option("--format", o->format, "Table format: md, csv, latex or json")->capture_default_str();
   command->add_option("-o,--output", o->output, "Write the table to this file (atomically) instead of stdout");
   command->add_option("--plot", o->plot, "Also draw miss rate against cache size: FILE.png or FILE.svg (gnuplot)");
-  command->add_flag("--keep-vertex-cache", o->keep_vertex_cache, "With --entries: keep the cache across draws");
+  command->add_flag("--keep-vertex-cache", o->keep_vertex_cache,
+                    "With a vertex cache spec (entries=...): keep the cache across draws");
   command->footer(
       "Examples:\n"
-      "  rastrace sweep frame.rtrace --size 1KiB..64KiB --assoc 1,2,4,full --policy fifo,lru,opt \\\n"
-      "      --layout linear,block4,block8,morton --plot missrate.png\n"
-      "  rastrace sweep old.din --size 4KiB..32KiB --line 32B,64B --assoc 1,2,full --format csv\n"
-      "  rastrace sweep frame.rtrace --entries 4..64 --policy fifo,lru --format json");
+      "  rastrace sweep frame.rtrace --cache size=1KiB..64KiB,assoc=1/2/4/full,policy=fifo/lru/opt,"
+      "layout=linear/block4/block8/morton --plot missrate.png\n"
+      "  rastrace sweep old.din --cache size=4KiB..32KiB,line=32B/64B,assoc=1/2/full --format csv\n"
+      "  rastrace sweep frame.rtrace --cache entries=4..64,policy=fifo/lru --format json");
   command->callback([o] {
     const TableFormat table_format = parse_table_format(o->format);
     const TraceSummary summary = summarize_trace(o->trace);
     auto parameters = trace_parameters(o->trace, summary);
 
-    if (!o->entries.empty()) {
-      std::vector<unsigned> entries;
-      for (const std::uint64_t k : parse_count_list(o->entries, "--entries")) {
-        if (k == 0 || k > (1u << 20)) throw InputError("--entries: " + std::to_string(k) + ": expected 1..1048576");
-        entries.push_back(static_cast<unsigned>(k));
-      }
-      std::vector<VertexCachePolicy> policies;
-      for (const std::string& p : split_list(o->sweep.policies, "--policy"))
-        policies.push_back(parse_vertex_cache_policy(p));
-      const auto rows = run_vertex_sweep(o->trace, policies, entries, !o->keep_vertex_cache);
+    std::string given, spec_text;
+    for (const char* flag : kOldFlags) {
+      std::string value = o->old_flags.at(flag);
+      if (value.empty()) continue;
+      given += std::string(given.empty() ? "--" : ", --") + flag + " " + value;
+      std::replace(value.begin(), value.end(), ',', '/');
+      spec_text += std::string(spec_text.empty() ? "" : ",") + flag + "=" + value;
+    }
+    if (!given.empty()) throw InputError(given + ": write --cache " + spec_text);
+
+    const CacheSpec cache = parse_cache_spec(o->cache, "--cache");
+    if (cache.kind == CacheKind::Vertex) {
+      const auto rows = run_vertex_sweep(o->trace, cache.vertex_policies, cache.entries, !o->keep_vertex_cache);
       parameters.emplace_back("vertex_cache_per_draw", o->keep_vertex_cache ? "kept" : "flushed");
       const Table table = vertex_cache_table("Post-transform vertex cache sweep", parameters, rows);
       write_output(o->output, render_table(table, table_format));
       return;
     }
-
-    SweepSpec spec = sweep_spec_from(o->sweep);
-    spec.source = o->source.empty() ? default_source(summary) : parse_sweep_source(o->source);
-    spec.stride = static_cast<std::uint32_t>(std::min<std::uint64_t>(parse_byte_size(o->stride, "--stride"), 1u << 20));
+    const SweepSpec spec = sweep_spec(cache, default_source(summary));
 
     const SweepResult result = run_sweep(o->trace, spec, o->threads);
     for (const std::string& skipped : result.skipped) std::cerr << "rastrace sweep: skipped " << skipped << "\n";

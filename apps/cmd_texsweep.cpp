@@ -56,7 +56,7 @@ struct TexsweepCommand {
   std::string rasters = "scanline,tiled8";
   std::string base = "strip";
   std::string regions = "auto";
-  std::string vcache = "fifo:16";
+  std::string vcache = "entries=16,policy=fifo";
   std::string resolution;
   std::string filter = "trilinear";
   std::string wrap = "repeat";

@@ -1,13 +1,15 @@
-// `rastrace vcache MESH --algo all|a,b,c --cache 8,12,16,20,24,32 --policy fifo,lru [--target K]
+// `rastrace vcache MESH --algo all|a,b,c --cache entries=8/12/16/20/24/32,policy=fifo/lru [--target K]
 //  --format md|csv|latex|json [--no-time] [--accounting misses|evictions]`: the post-transform vertex cache under every
 //  ordering.
 // One row per algorithm, policy and cache size: ACMR, ATVR, misses, indices per triangle, Hoppe's
 // bandwidth (ACMR * 32 + indices per triangle * 2 bytes per triangle) and the ordering's run time.
 // An algorithm orders for the simulated cache unless --target fixes the size it orders for.
+#include <algorithm>
 #include <iostream>
 #include <memory>
 
 #include "apps/commands.h"
+#include "cache_sim/cache_spec.h"
 #include "core/error.h"
 #include "experiments/vcache_table.h"
 #include "scenes/mesh_spec.h"
@@ -19,9 +21,9 @@ namespace {
 struct VcacheOptions {
   std::string mesh;
   std::string algorithms = "all";
-  std::vector<unsigned> caches = {8, 12, 16, 20, 24, 32};
-  std::vector<std::string> policies = {"fifo"};
-  unsigned target = 0;  // 0: the simulated size
+  std::string cache = "entries=8/12/16/20/24/32,policy=fifo";
+  std::string old_policy;  // --policy, replaced by the cache spec's policy key
+  unsigned target = 0;     // 0: the simulated size
   std::uint64_t seed = 1;
   double time_budget = 60.0;
   std::string format = "md";
@@ -33,9 +35,18 @@ void run_vcache(const VcacheOptions& options) {
   const TableFormat format = parse_table_format(options.format);
   VcacheTableSpec spec;
   spec.algorithms = options.algorithms;
-  spec.caches = options.caches;
-  spec.policies.clear();
-  for (const std::string& text : options.policies) spec.policies.push_back(parse_vertex_cache_policy(text));
+  if (!options.old_policy.empty()) {
+    std::string policies = options.old_policy;
+    std::replace(policies.begin(), policies.end(), ',', '/');
+    throw InputError("--policy '" + options.old_policy + "': write the policy in the cache spec, e.g. --cache " +
+                     "entries=12/16,policy=" + policies);
+  }
+  const CacheSpec cache = parse_cache_spec(options.cache, "--cache");
+  if (cache.kind != CacheKind::Vertex)
+    throw InputError("--cache '" + options.cache + "': vcache simulates post-transform vertex caches: expected " +
+                     "entries=...,policy=..., e.g. entries=12/16,policy=fifo/lru");
+  spec.caches = cache.entries;
+  spec.policies = cache.vertex_policies;
   spec.target = options.target;
   spec.seed = options.seed;
   spec.time_budget = options.time_budget;
@@ -55,10 +66,11 @@ void add_vcache_command(CLI::App& app) {
   command->add_option("mesh", options->mesh, "Mesh file, builtin:<scene> or grid:WxH")->required();
   command->add_option("--algo", options->algorithms, "all, or a comma-separated list of orderings")
       ->capture_default_str();
-  command->add_option("--cache", options->caches, "Simulated cache sizes (entries)")
-      ->delimiter(',')
+  command
+      ->add_option("--cache", options->cache,
+                   "Simulated post-transform caches (cache spec, README): entries=N/M/...,policy=fifo/lru")
       ->capture_default_str();
-  command->add_option("--policy", options->policies, "fifo, lru, or both")->delimiter(',')->capture_default_str();
+  command->add_option("--policy", options->old_policy)->group("");  // the old spelling: an error naming the new
   command->add_option("--target", options->target,
                       "Cache size the orderings optimize for (default: the simulated size)");
   command->add_option("--seed", options->seed, "Seed of the randomized orderings")->capture_default_str();
@@ -73,10 +85,10 @@ void add_vcache_command(CLI::App& app) {
   command->add_flag("--no-time", options->no_time, "Leave out the run-time column so outputs compare byte for byte");
   command->footer(
       "Examples:\n"
-      "  rastrace vcache grid:16x16 --algo scanline,grid,tipsy --cache 12,16,20\n"
-      "  rastrace vcache data/meshes/fandisk.off --algo all --cache 16 --policy fifo,lru --format csv --no-time\n"
-      "  rastrace vcache grid:16x16 --algo grid --target 8 --cache 8,16\n"
-      "  rastrace vcache grid:16x16 --algo scanline,grid --cache 12,16,20 --accounting evictions");
+      "  rastrace vcache grid:16x16 --algo scanline,grid,tipsy --cache entries=12/16/20\n"
+      "  rastrace vcache data/meshes/fandisk.off --algo all --cache entries=16,policy=fifo/lru --format csv --no-time\n"
+      "  rastrace vcache grid:16x16 --algo grid --target 8 --cache entries=8/16\n"
+      "  rastrace vcache grid:16x16 --algo scanline,grid --cache entries=12/16/20 --accounting evictions");
   command->callback([options] { run_vcache(*options); });
 }
 

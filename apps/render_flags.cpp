@@ -1,5 +1,6 @@
 #include "apps/render_flags.h"
 
+#include "cache_sim/cache_spec.h"
 #include "core/error.h"
 #include "core/units.h"
 
@@ -22,38 +23,11 @@ void add_scene_render_flags(CLI::App& command, SceneRenderFlags& flags) {
       ->capture_default_str();
 }
 
-VertexCacheSpec parse_vcache_spec(const std::string& text) {
-  const std::size_t colon = text.find(':');
-  if (colon == std::string::npos) throw InputError("--vcache '" + text + "': expected POLICY:ENTRIES, e.g. fifo:16");
-  VertexCacheSpec spec;
-  spec.policy = parse_vertex_cache_policy(text.substr(0, colon));
-  const std::uint64_t entries = parse_count(text.substr(colon + 1), "--vcache");
-  if (entries < 1 || entries > 65536) throw InputError("--vcache '" + text + "': expected 1..65536 entries");
-  spec.entries = static_cast<unsigned>(entries);
-  return spec;
-}
+VertexCacheSpec parse_vcache_spec(const std::string& text) { return parse_vertex_cache(text, "--vcache"); }
 
-CacheConfig parse_tcache_spec(const std::string& text) {
-  const std::vector<std::string> items = split_list(text, "--tcache");
-  if (items.size() != 4)
-    throw InputError("--tcache '" + text + "': expected SIZE,LINE,ASSOC,POLICY, e.g. 16KiB,64B,4way,lru");
-  CacheConfig config;
-  config.size_bytes = parse_byte_size(items[0], "--tcache size");
-  const std::uint64_t line = parse_byte_size(items[1], "--tcache line size");
-  if (line > 0xFFFFFFFFull) throw InputError("--tcache '" + text + "': line size too large");
-  config.line_bytes = static_cast<std::uint32_t>(line);
-  const std::string& assoc = items[2];
-  if (assoc == "full")
-    config.assoc = 0;
-  else if (assoc == "direct")
-    config.assoc = 1;
-  else if (assoc.size() > 3 && assoc.ends_with("way"))
-    config.assoc = static_cast<std::uint32_t>(parse_count(assoc.substr(0, assoc.size() - 3), "--tcache associativity"));
-  else
-    throw InputError("--tcache '" + text + "': associativity '" + assoc + "': expected Nway, direct or full");
-  config.policy = parse_replacement_policy(items[3]);
-  validate(config);
-  return config;
+TextureCacheSpec parse_tcache_spec(const std::string& text) {
+  const ByteCacheChoice choice = parse_byte_cache(text, "--tcache");
+  return {choice.cache, choice.layout};
 }
 
 }  // namespace rastrace

@@ -14,9 +14,9 @@ namespace rastrace {
 
 void add_scene_render_flags(CLI::App& command, SceneRenderFlags& flags);
 
-// "fifo:16" / "lru:32".
+// One cache in the cache-spec grammar (cache_sim/cache_spec.h): "entries=16,policy=fifo" and
+// "size=16KiB,line=64B,assoc=4,policy=lru,layout=block4".
 VertexCacheSpec parse_vcache_spec(const std::string& text);
-// "16KiB,64B,4way,lru": size, line size, associativity (Nway, direct, full), policy.
-CacheConfig parse_tcache_spec(const std::string& text);
+TextureCacheSpec parse_tcache_spec(const std::string& text);
 
 }  // namespace rastrace

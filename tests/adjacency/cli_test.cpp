@@ -79,7 +79,14 @@ TEST(AdjacencyCommand, BadInputIsAnErrorWithExitCodeOne) {
   CommandRun r = run({"adjacency", mesh, "--order", "bogus"});
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("expected careful, fast, baseline, baseline-mesh or all"), std::string::npos) << r.err;
-  r = run({"adjacency", mesh, "--cache", "0"});
+  r = run({"adjacency", mesh, "--cache", "entries=0"});
+  EXPECT_EQ(r.exit_code, 1);
+  r = run({"adjacency", mesh, "--cache", "24"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--cache '24': write entries=24"), std::string::npos) << r.err;
+  r = run({"adjacency", mesh, "--cache", "entries=24,policy=lru"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("write entries=24,policy=fifo"), std::string::npos) << r.err;
   EXPECT_EQ(r.exit_code, 1);
   r = run({"adjacency", "/nonexistent/mesh.off"});
   EXPECT_EQ(r.exit_code, 1);

@@ -37,8 +37,8 @@ TEST(SweepCommand, DinSweepGivesTheNaiveReferenceMissesForEveryConfiguration) {
     std::ofstream out(din);
     for (const std::uint64_t a : addresses) out << (a % 3) << ' ' << std::hex << a << std::dec << '\n';
   }
-  const ToolRun r = run({"sweep", din, "--size", "256B..2KiB", "--line", "16B,64B", "--assoc", "1,2,full", "--policy",
-                         "fifo,lru,random,opt", "--format", "json"});
+  const ToolRun r = run({"sweep", din, "--cache",
+                         "size=256B..2KiB,line=16B/64B,assoc=1/2/full,policy=fifo/lru/random/opt", "--format", "json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json rows = nlohmann::json::parse(r.out);
   ASSERT_EQ(rows.size(), 4u * 2 * 3 * 4);
@@ -88,8 +88,8 @@ TEST(ReplayCommand, ReplayTableStatesItsParametersAndMatchesTheLiveBank) {
                                std::to_string(live.texture_stats()[1].misses) + ","));
 
   const std::string plot = dir.file("plot.svg");
-  const ToolRun s = run({"sweep", path, "--size", "1KiB..8KiB", "--policy", "lru,fifo", "--layout", "linear,morton",
-                         "--plot", plot, "--format", "latex"});
+  const ToolRun s = run({"sweep", path, "--cache", "size=1KiB..8KiB,policy=lru/fifo,layout=linear/morton", "--plot",
+                         plot, "--format", "latex"});
   EXPECT_EQ(s.exit_code, 0) << s.err;
   EXPECT_THAT(s.out, HasSubstr("\\toprule"));
   EXPECT_TRUE(std::filesystem::exists(plot));
@@ -113,9 +113,9 @@ TEST(ReplayCommand, BadInputsAreReportedWithExitCodeOne) {
   r = run({"replay", path, "--cache", "size=4KiB,colour=red"});
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_THAT(r.err, HasSubstr("unknown key 'colour'"));
-  r = run({"sweep", path, "--size", "1KiB..3KiB"});
+  r = run({"sweep", path, "--cache", "size=1KiB..3KiB"});
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_THAT(r.err, HasSubstr("--size: '1KiB..3KiB': expected a range between two powers of two"));
+  EXPECT_THAT(r.err, HasSubstr("--cache size: '1KiB..3KiB': expected a range between two powers of two"));
   // Flip a payload byte: the replay names the chunk.
   std::string bytes;
   {
@@ -128,6 +128,64 @@ TEST(ReplayCommand, BadInputsAreReportedWithExitCodeOne) {
   r = run({"replay", path, "--cache", "size=4KiB"});
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_THAT(r.err, HasSubstr("byte " + std::to_string(offset) + ": chunk 0: checksum mismatch"));
+}
+
+TEST(CacheSpecCommands, OldSpellingsFailShowingTheSpecToWrite) {
+  const testing::TempDir dir;
+  const std::string path = dir.file("old.rtrace"), image = dir.file("old.png");
+  {
+    TraceWriter writer(path, {});
+    writer.address_accesses({{{1, 0}, {2, 0}}});
+    writer.finish();
+  }
+  ToolRun r = run({"sweep", path, "--size", "1KiB..64KiB", "--assoc", "1,2,full", "--policy", "fifo,lru"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("--size 1KiB..64KiB, --assoc 1,2,full, --policy fifo,lru: write --cache "
+                               "size=1KiB..64KiB,assoc=1/2/full,policy=fifo/lru"));
+  r = run({"sweep", path, "--entries", "4..64", "--policy", "fifo,lru"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("--entries 4..64, --policy fifo,lru: write --cache entries=4..64,policy=fifo/lru"));
+  r = run({"replay", path, "--cache", "16KiB,64B,4way,lru"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("--cache '16KiB,64B,4way,lru': write size=16KiB,line=64B,assoc=4,policy=lru"));
+  r = run({"render", "builtin:grid", "-o", image, "--vcache", "fifo:16"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("--vcache 'fifo:16': write entries=16,policy=fifo"));
+  r = run({"render", "builtin:grid", "-o", image, "--tcache", "16KiB,64B,4way,lru"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("--tcache '16KiB,64B,4way,lru': write size=16KiB,line=64B,assoc=4,policy=lru"));
+  r = run({"render", "builtin:grid", "-o", image, "--layout", "morton"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_THAT(r.err, HasSubstr("--layout 'morton': write the layout in the texture cache spec"));
+  EXPECT_FALSE(std::filesystem::exists(image));
+}
+
+TEST(CacheSpecCommands, SweepAndReplayTakeAlternativesAndVertexCaches) {
+  // Two draws of a strip restarting at 0xFFFFFFFF: replay and sweep agree on every cache.
+  const testing::TempDir dir;
+  const std::string path = dir.file("vertex.rtrace");
+  {
+    TraceWriter writer(path, {});
+    for (std::uint32_t d = 0; d < 2; ++d) {
+      writer.begin_draw({d, PrimitiveType::TriangleStrip, kStripRestart});
+      writer.vertex_fetches({{{0, true}, {1, false}, {2, false}, {3, false}, {1, true}, {2, false}, {4, false}}});
+      writer.end_draw();
+    }
+    writer.finish();
+  }
+  const ToolRun replay = run({"replay", path, "--cache", "entries=2/4,policy=fifo/lru", "--format", "csv"});
+  const ToolRun sweep = run({"sweep", path, "--cache", "entries=2/4,policy=fifo/lru", "--format", "csv"});
+  ASSERT_EQ(replay.exit_code, 0) << replay.err;
+  ASSERT_EQ(sweep.exit_code, 0) << sweep.err;
+  // Per draw, the cache emptied: 0 1 2 3 | 1 2 4, three triangles. Two entries miss all 7 under
+  // either policy; four entries miss 5. Rows in the order policy, entries.
+  for (const ToolRun* t : {&replay, &sweep}) {
+    EXPECT_THAT(t->out, HasSubstr("fifo,2,14,14,6,0,"));
+    EXPECT_THAT(t->out, HasSubstr("fifo,4,14,10,6,0,"));
+    EXPECT_THAT(t->out, HasSubstr("lru,2,14,14,6,0,"));
+    EXPECT_THAT(t->out, HasSubstr("lru,4,14,10,6,0,"));
+    EXPECT_LT(t->out.find("fifo,4,"), t->out.find("lru,2,"));
+  }
 }
 
 }  // namespace

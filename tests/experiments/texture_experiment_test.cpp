@@ -76,9 +76,9 @@ TEST(TextureExperiment, LiveRenderAgreesWithTheSweptTraceToTheMiss) {
                                      {"builtin:bunny", "texgroup"},
                                      {"builtin:spider", "strip"},
                                      {"builtin:spider", "texgroup"}}) {
-    const auto live =
-        nlohmann::json::parse(run({"render", scene, "--order", order, "--cull", "back", "--tcache", "4KiB,64B,full,lru",
-                                   "--layout", "linear", "-o", dir.file("frame.png"), "--json"}));
+    const auto live = nlohmann::json::parse(
+        run({"render", scene, "--order", order, "--cull", "back", "--tcache",
+             "size=4KiB,line=64B,assoc=full,policy=lru,layout=linear", "-o", dir.file("frame.png"), "--json"}));
     const auto swept = nlohmann::json::parse(
         run({"texsweep", scene, "--order", order,  "--cull",   "back", "--raster", "scanline", "--size",   "4KiB",
              "--line",   "64B", "--assoc", "full", "--policy", "lru",  "--layout", "linear",   "--format", "json"}));

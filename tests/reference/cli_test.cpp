@@ -20,9 +20,9 @@ CommandRun run(const std::vector<std::string>& arguments) { return testing::run_
 TEST(RenderCommand, PrintsTheFrameCostsAsJsonAndWritesTheImageAndTrace) {
   const testing::TempDir dir;
   const std::string image = dir.file("grid.png"), trace = dir.file("grid.rtrace"), depth = dir.file("grid.exr");
-  const CommandRun r =
-      run({"render", "builtin:grid", "--size", "160x120", "-o", image, "--trace", trace, "--depth", depth, "--raster",
-           "tiled8", "--vcache", "fifo:16", "--tcache", "8KiB,64B,2way,lru", "--layout", "morton", "--json"});
+  const CommandRun r = run({"render", "builtin:grid", "--size", "160x120", "-o", image, "--trace", trace, "--depth",
+                            depth, "--raster", "tiled8", "--vcache", "entries=16,policy=fifo", "--tcache",
+                            "size=8KiB,line=64B,assoc=2,policy=lru,layout=morton", "--json"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json rows = nlohmann::json::parse(r.out);
   ASSERT_EQ(rows.size(), 1u);
@@ -44,9 +44,9 @@ TEST(RenderCommand, PrintsTheFrameCostsAsJsonAndWritesTheImageAndTrace) {
 TEST(RenderCommand, BadOptionsAreErrorsAndLeaveNoFile) {
   const testing::TempDir dir;
   const std::string image = dir.file("bad.png");
-  CommandRun r = run({"render", "builtin:grid", "-o", image, "--tcache", "16KiB,64B,4,lru"});
+  CommandRun r = run({"render", "builtin:grid", "-o", image, "--tcache", "size=16KiB,line=64B,assoc=4way,policy=lru"});
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("associativity '4'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--tcache assoc: '4way': expected a whole number"), std::string::npos) << r.err;
   r = run({"render", "builtin:grid", "-o", image, "--raster", "zigzag"});
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("expected scanline or tiled8"), std::string::npos) << r.err;
