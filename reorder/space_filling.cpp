@@ -13,9 +13,8 @@
 #include <cmath>
 #include <numeric>
 
-#include <glm/common.hpp>
-
 #include "reorder/ordering.h"
+#include "scenes/bounding_box.h"
 
 namespace rastrace {
 
@@ -32,12 +31,8 @@ struct Cells {
 Cells quantized_centroids(const Mesh& mesh) {
   Cells cells;
   const std::size_t faces = mesh.face_count();
-  glm::vec3 lo(INFINITY), hi(-INFINITY);
-  for (const std::uint32_t v : mesh.indices) {
-    lo = glm::min(lo, mesh.positions[v]);
-    hi = glm::max(hi, mesh.positions[v]);
-  }
-  const glm::vec3 extent = hi - lo;
+  const BoundingBox box = bounding_box(mesh.positions, mesh.indices);
+  const glm::vec3 lo = box.lo, extent = box.extent();
   const float largest = std::max({extent.x, extent.y, extent.z});
   int axes[3];
   for (int a = 0; a < 3; ++a)

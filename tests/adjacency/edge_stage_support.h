@@ -9,6 +9,7 @@
 
 #include "pipeline/edge_stage.h"
 #include "pipeline/pipeline.h"
+#include "scenes/bounding_box.h"
 
 namespace rastrace::testing {
 
@@ -18,13 +19,9 @@ struct Camera {
 
 // Looks at the mesh's bounding-box centre from `direction`, far enough to see all of it.
 inline Camera frame_mesh(const Mesh& mesh, glm::vec3 direction, float aspect) {
-  glm::vec3 lo(1e30f), hi(-1e30f);
-  for (const glm::vec3& p : mesh.positions) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  const glm::vec3 centre = 0.5f * (lo + hi);
-  const float radius = 0.5f * glm::length(hi - lo);
+  const BoundingBox box = bounding_box(mesh.positions);
+  const glm::vec3 centre = box.centre();
+  const float radius = 0.5f * glm::length(box.extent());
   Camera camera;
   const glm::vec3 eye = centre + glm::normalize(direction) * radius * 2.6f;
   camera.view = glm::lookAt(eye, centre, glm::vec3(0, 1, 0));

@@ -5,6 +5,7 @@
 
 #include <glm/ext/matrix_transform.hpp>
 
+#include "scenes/bounding_box.h"
 #include "scenes/mesh_io.h"
 #include "scenes/procedural.h"
 #include "scenes/scene_io.h"
@@ -153,13 +154,9 @@ Scene bunny_checker_scene(int width, int height) {
   project_uvs_spherical(bunny.mesh);
   bunny.mesh.materials = {textured(0)};
   bunny.mesh.face_material.clear();
-  glm::vec3 lo(1e30f), hi(-1e30f);
-  for (const glm::vec3& p : bunny.mesh.positions) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
+  const BoundingBox box = bounding_box(bunny.mesh.positions);
   scene.objects.push_back(bunny);
-  scene.camera = frame_bounds(lo, hi, static_cast<float>(width) / static_cast<float>(height));
+  scene.camera = frame_bounds(box.lo, box.hi, static_cast<float>(width) / static_cast<float>(height));
   scene.camera.fov_y_degrees = 45.0f;
   return scene;
 }
