@@ -1,6 +1,6 @@
-// Castano's cache-optimal order for regular W x H grids ("Optimal Grid Rendering", 2009;
-// papers/castano-optimal-grid-rendering.txt), the article's gridGen() applied to make_grid's
-// layout (mesh.grid set): vertex (x, y) = (W+1)*y + x, quad (x, y) = faces 2(yW+x), 2(yW+x)+1.
+// Castano's cache-optimal order for regular W x H grids ("Optimal grid rendering", 2009), the
+// article's gridGen() applied to make_grid's layout (mesh.grid set): vertex (x, y) = (W+1)*y + x,
+// quad (x, y) = faces 2(yW+x), 2(yW+x)+1.
 //
 // A FIFO cache of k entries renders a row of quads without losing a vertex it needs again when it
 // can hold the row's top vertices plus the two of the quad being drawn: the grid is cut into

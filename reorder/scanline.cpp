@@ -1,5 +1,5 @@
 // Scanline order: rows of triangles swept one after another, the order a naive exporter or a
-// height-field generator produces. Castano's baseline (papers/castano-optimal-grid-rendering.txt).
+// height-field generator produces. The baseline of Castano, "Optimal grid rendering", 2009.
 //
 // On a make_grid grid (mesh.grid set) it is the quads row by row, left to right, both triangles
 // of a quad together: 16x16 gives ACMR 1.062 / ATVR 1.882 at every FIFO size from 12 to 20, since

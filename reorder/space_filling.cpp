@@ -1,8 +1,8 @@
 // Space-filling-curve orders: faces sorted by the Morton (Z-order) or Hilbert index of their
 // centroid, quantized over the bounding box of the mesh's vertices. Cache-oblivious: nearby
 // triangles end up near each other in the sequence whatever the cache size, but the curve knows
-// nothing of connectivity. Castano (papers/castano-optimal-grid-rendering.txt) lists both as
-// baselines: 16x16 grid, FIFO 20/16/12, Morton ACMR 0.719/0.750/0.812, Hilbert 0.699/0.754/0.797.
+// nothing of connectivity. Castano ("Optimal grid rendering", 2009) lists both as baselines:
+// 16x16 grid, FIFO 20/16/12, Morton ACMR 0.719/0.750/0.812, Hilbert 0.699/0.754/0.797.
 //
 // Axes with no extent (a flat grid) are dropped so a planar mesh gets the 2D curve, not a slice
 // of the 3D one; each remaining axis is quantized to 16 bits. Hilbert indices come from

@@ -20,8 +20,8 @@
 //   from 2 to 5 misses per remaining primitive. Linear time, independent of the cache size;
 //   CM/V 1.64-1.72 at cache 24 (the paper: 1.76-1.82).
 // - baseline: kcache (reorder/kcache.cpp, Lin and Yu's method for plain triangles) run on the
-//   cover faces alone, as a triangle mesh, each primitive following its cover face: issue 7's
-//   definition of the off-the-shelf method. CM/V 2.0-2.5 at cache 24. `gain` is measured
+//   cover faces alone, as a triangle mesh, each primitive following its cover face: the
+//   off-the-shelf method applied to the primitives. CM/V 2.0-2.5 at cache 24. `gain` is measured
 //   against it.
 // - baseline-mesh: kcache run on all the mesh's faces, as an engine that reorders its triangle
 //   buffer would, and the mesh then drawn in that order with each face drawn by the primitive
