@@ -10,6 +10,7 @@
 
 #include "pipeline/render_scene.h"
 #include "reference/osmesa_renderer.h"
+#include "scenes/bounding_box.h"
 #include "scenes/mesh_io.h"
 #include "scenes/procedural.h"
 #include "scenes/scene_io.h"
@@ -36,13 +37,9 @@ const Scene& bunny_frame() {
     material.texture = 0;
     bunny.mesh.materials = {material};
     bunny.mesh.face_material.clear();
-    glm::vec3 lo(1e30f), hi(-1e30f);
-    for (const glm::vec3& p : bunny.mesh.positions) {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
+    const BoundingBox box = bounding_box(bunny.mesh.positions);
     s.objects.push_back(bunny);
-    s.camera = frame_bounds(lo, hi, 1024.0f / 768.0f);
+    s.camera = frame_bounds(box.lo, box.hi, 1024.0f / 768.0f);
     return s;
   }();
   return scene;

@@ -2,30 +2,25 @@
 
 #include <bit>
 
+#include "core/enum_names.h"
 #include "core/error.h"
 #include "core/units.h"
 
 namespace rastrace {
 
-const char* to_string(ReplacementPolicy policy) {
-  switch (policy) {
-    case ReplacementPolicy::Fifo:
-      return "fifo";
-    case ReplacementPolicy::Lru:
-      return "lru";
-    case ReplacementPolicy::Random:
-      return "random";
-    default:
-      return "opt";
-  }
-}
+namespace {
+
+constexpr EnumName<ReplacementPolicy> kPolicies[] = {{ReplacementPolicy::Fifo, "fifo"},
+                                                     {ReplacementPolicy::Lru, "lru"},
+                                                     {ReplacementPolicy::Random, "random"},
+                                                     {ReplacementPolicy::Opt, "opt"}};
+
+}  // namespace
+
+const char* to_string(ReplacementPolicy policy) { return enum_to_string(policy, kPolicies); }
 
 ReplacementPolicy parse_replacement_policy(const std::string& text) {
-  if (text == "fifo") return ReplacementPolicy::Fifo;
-  if (text == "lru") return ReplacementPolicy::Lru;
-  if (text == "random") return ReplacementPolicy::Random;
-  if (text == "opt") return ReplacementPolicy::Opt;
-  throw InputError("unknown replacement policy '" + text + "': expected fifo, lru, random or opt");
+  return parse_enum(text, kPolicies, "replacement policy");
 }
 
 void validate(const CacheConfig& c) {

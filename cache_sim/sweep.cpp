@@ -7,6 +7,7 @@
 #include <optional>
 #include <thread>
 
+#include "core/enum_names.h"
 #include "core/error.h"
 #include "core/progress.h"
 #include "core/units.h"
@@ -14,23 +15,16 @@
 
 namespace rastrace {
 
-const char* to_string(SweepSource source) {
-  switch (source) {
-    case SweepSource::Texel:
-      return "texel";
-    case SweepSource::VertexBuffer:
-      return "vertex";
-    default:
-      return "address";
-  }
-}
+namespace {
 
-SweepSource parse_sweep_source(const std::string& text) {
-  if (text == "texel") return SweepSource::Texel;
-  if (text == "vertex") return SweepSource::VertexBuffer;
-  if (text == "address") return SweepSource::Address;
-  throw InputError("unknown source '" + text + "': expected texel, vertex or address");
-}
+constexpr EnumName<SweepSource> kSources[] = {
+    {SweepSource::Texel, "texel"}, {SweepSource::VertexBuffer, "vertex"}, {SweepSource::Address, "address"}};
+
+}  // namespace
+
+const char* to_string(SweepSource source) { return enum_to_string(source, kSources); }
+
+SweepSource parse_sweep_source(const std::string& text) { return parse_enum(text, kSources, "source"); }
 
 namespace {
 

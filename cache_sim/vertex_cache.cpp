@@ -2,16 +2,22 @@
 
 #include <algorithm>
 
+#include "core/enum_names.h"
 #include "core/error.h"
 
 namespace rastrace {
 
-const char* to_string(VertexCachePolicy policy) { return policy == VertexCachePolicy::Fifo ? "fifo" : "lru"; }
+namespace {
+
+constexpr EnumName<VertexCachePolicy> kPolicies[] = {{VertexCachePolicy::Fifo, "fifo"},
+                                                     {VertexCachePolicy::Lru, "lru"}};
+
+}  // namespace
+
+const char* to_string(VertexCachePolicy policy) { return enum_to_string(policy, kPolicies); }
 
 VertexCachePolicy parse_vertex_cache_policy(const std::string& text) {
-  if (text == "fifo") return VertexCachePolicy::Fifo;
-  if (text == "lru") return VertexCachePolicy::Lru;
-  throw InputError("unknown vertex cache policy '" + text + "': expected fifo or lru");
+  return parse_enum(text, kPolicies, "vertex cache policy");
 }
 
 VertexCache::VertexCache(VertexCachePolicy policy, unsigned entries)

@@ -6,17 +6,21 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/error.h"
+#include "core/enum_names.h"
 
 namespace rastrace {
 
-TableFormat parse_table_format(const std::string& text) {
-  if (text == "md" || text == "markdown") return TableFormat::Markdown;
-  if (text == "csv") return TableFormat::Csv;
-  if (text == "latex") return TableFormat::Latex;
-  if (text == "json") return TableFormat::Json;
-  throw InputError("unknown table format '" + text + "': expected md, csv, latex or json");
-}
+namespace {
+
+constexpr EnumName<TableFormat> kTableFormats[] = {{TableFormat::Markdown, "md"},
+                                                   {TableFormat::Csv, "csv"},
+                                                   {TableFormat::Latex, "latex"},
+                                                   {TableFormat::Json, "json"},
+                                                   {TableFormat::Markdown, "markdown"}};
+
+}  // namespace
+
+TableFormat parse_table_format(const std::string& text) { return parse_enum(text, kTableFormats, "table format"); }
 
 void Table::add_row(std::vector<TableCell> row) {
   if (row.size() != columns.size())

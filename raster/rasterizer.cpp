@@ -3,17 +3,20 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/error.h"
+#include "core/enum_names.h"
 
 namespace rastrace {
 
-Traversal parse_traversal(const std::string& text) {
-  if (text == "scanline") return Traversal::Scanline;
-  if (text == "tiled8" || text == "tiled") return Traversal::Tiled8;
-  throw InputError("unknown traversal order '" + text + "': expected scanline or tiled8");
-}
+namespace {
 
-const char* to_string(Traversal traversal) { return traversal == Traversal::Scanline ? "scanline" : "tiled8"; }
+constexpr EnumName<Traversal> kTraversals[] = {
+    {Traversal::Scanline, "scanline"}, {Traversal::Tiled8, "tiled8"}, {Traversal::Tiled8, "tiled"}};
+
+}  // namespace
+
+Traversal parse_traversal(const std::string& text) { return parse_enum(text, kTraversals, "traversal order"); }
+
+const char* to_string(Traversal traversal) { return enum_to_string(traversal, kTraversals); }
 
 namespace {
 

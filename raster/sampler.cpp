@@ -3,59 +3,40 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/error.h"
+#include "core/enum_names.h"
 
 namespace rastrace {
 
+namespace {
+
+// The minification filters by their GL names, then the usual aliases.
+constexpr EnumName<TextureFilter> kFilters[] = {{TextureFilter::Nearest, "nearest"},
+                                                {TextureFilter::Linear, "linear"},
+                                                {TextureFilter::NearestMipmapNearest, "nearest_mipmap_nearest"},
+                                                {TextureFilter::LinearMipmapNearest, "linear_mipmap_nearest"},
+                                                {TextureFilter::LinearMipmapLinear, "linear_mipmap_linear"},
+                                                {TextureFilter::LinearMipmapLinear, "trilinear"},
+                                                {TextureFilter::LinearMipmapNearest, "bilinear"}};
+
+constexpr EnumName<TextureWrap> kWraps[] = {
+    {TextureWrap::Repeat, "repeat"}, {TextureWrap::ClampToEdge, "clamp_to_edge"}, {TextureWrap::ClampToEdge, "clamp"}};
+
+}  // namespace
+
 SamplerState parse_filter(const std::string& text, SamplerState base) {
-  struct Name {
-    const char* name;
-    TextureFilter min, mag;
-  };
-  static constexpr Name names[] = {
-      {"nearest", TextureFilter::Nearest, TextureFilter::Nearest},
-      {"linear", TextureFilter::Linear, TextureFilter::Linear},
-      {"nearest_mipmap_nearest", TextureFilter::NearestMipmapNearest, TextureFilter::Nearest},
-      {"linear_mipmap_nearest", TextureFilter::LinearMipmapNearest, TextureFilter::Linear},
-      {"linear_mipmap_linear", TextureFilter::LinearMipmapLinear, TextureFilter::Linear},
-      {"trilinear", TextureFilter::LinearMipmapLinear, TextureFilter::Linear},
-      {"bilinear", TextureFilter::LinearMipmapNearest, TextureFilter::Linear},
-  };
-  for (const Name& name : names) {
-    if (text == name.name) {
-      base.min_filter = name.min;
-      base.mag_filter = name.mag;
-      return base;
-    }
-  }
-  throw InputError("unknown texture filter '" + text +
-                   "': expected nearest, linear, nearest_mipmap_nearest, linear_mipmap_nearest, "
-                   "linear_mipmap_linear (trilinear)");
+  base.min_filter = parse_enum(text, kFilters, "texture filter");
+  // Magnification has no mipmaps: the filter within a level.
+  const bool nearest =
+      base.min_filter == TextureFilter::Nearest || base.min_filter == TextureFilter::NearestMipmapNearest;
+  base.mag_filter = nearest ? TextureFilter::Nearest : TextureFilter::Linear;
+  return base;
 }
 
-TextureWrap parse_wrap(const std::string& text) {
-  if (text == "repeat") return TextureWrap::Repeat;
-  if (text == "clamp_to_edge" || text == "clamp") return TextureWrap::ClampToEdge;
-  throw InputError("unknown texture wrap '" + text + "': expected repeat or clamp_to_edge");
-}
+TextureWrap parse_wrap(const std::string& text) { return parse_enum(text, kWraps, "texture wrap"); }
 
-const char* to_string(TextureFilter filter) {
-  switch (filter) {
-    case TextureFilter::Nearest:
-      return "nearest";
-    case TextureFilter::Linear:
-      return "linear";
-    case TextureFilter::NearestMipmapNearest:
-      return "nearest_mipmap_nearest";
-    case TextureFilter::LinearMipmapNearest:
-      return "linear_mipmap_nearest";
-    case TextureFilter::LinearMipmapLinear:
-      return "linear_mipmap_linear";
-  }
-  return "?";
-}
+const char* to_string(TextureFilter filter) { return enum_to_string(filter, kFilters); }
 
-const char* to_string(TextureWrap wrap) { return wrap == TextureWrap::Repeat ? "repeat" : "clamp_to_edge"; }
+const char* to_string(TextureWrap wrap) { return enum_to_string(wrap, kWraps); }
 
 float compute_lod(const SamplerState& state, int width, int height, float dsdx, float dtdx, float dsdy, float dtdy) {
   const float w = static_cast<float>(width), h = static_cast<float>(height);

@@ -17,18 +17,22 @@
 #include <GL/osmesa.h>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "core/enum_names.h"
 #include "core/error.h"
 #include "pipeline/render_scene.h"
 
 namespace rastrace {
 
-ReferenceDriver parse_reference_driver(const std::string& text) {
-  if (text == "softpipe") return ReferenceDriver::Softpipe;
-  if (text == "llvmpipe") return ReferenceDriver::Llvmpipe;
-  throw InputError("unknown OSMesa driver '" + text + "': expected softpipe or llvmpipe");
-}
+namespace {
 
-const char* to_string(ReferenceDriver driver) { return driver == ReferenceDriver::Softpipe ? "softpipe" : "llvmpipe"; }
+constexpr EnumName<ReferenceDriver> kDrivers[] = {{ReferenceDriver::Softpipe, "softpipe"},
+                                                  {ReferenceDriver::Llvmpipe, "llvmpipe"}};
+
+}  // namespace
+
+ReferenceDriver parse_reference_driver(const std::string& text) { return parse_enum(text, kDrivers, "OSMesa driver"); }
+
+const char* to_string(ReferenceDriver driver) { return enum_to_string(driver, kDrivers); }
 
 namespace {
 

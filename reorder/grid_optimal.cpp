@@ -1,4 +1,4 @@
-// Castano's cache-optimal order for regular W x H grids ("Optimal Grid Rendering", 2009), the
+// Castano's cache-optimal order for regular W x H grids ("Optimal grid rendering", 2009), the
 // article's gridGen() applied to make_grid's layout (mesh.grid set): vertex (x, y) = (W+1)*y + x,
 // quad (x, y) = faces 2(yW+x), 2(yW+x)+1.
 //

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/progress.h"
+#include "core/rng.h"
 #include "reorder/greedy.h"
 #include "reorder/strip.h"
 
@@ -19,13 +20,6 @@ namespace {
 
 constexpr int kCaches = 3;                 // sizes k-1, k, k+1
 constexpr std::int64_t kStripCost = 6000;  // 6 bytes per strip, scaled by 1000
-
-std::uint64_t splitmix64(std::uint64_t& state) {
-  std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
 
 // A FIFO of at most `cap` vertices for the short re-simulations (k is small: a scan is cheap).
 class SmallFifo {
@@ -121,8 +115,8 @@ class Local {
     }
     std::vector<std::uint32_t> visit(t_.face_count);
     std::iota(visit.begin(), visit.end(), 0u);
-    std::uint64_t state = params.seed;
-    for (std::size_t i = visit.size(); i > 1; --i) std::swap(visit[i - 1], visit[splitmix64(state) % i]);
+    Rng rng(params.seed);
+    shuffle(std::span(visit), rng);
 
     const std::uint64_t budget = params.iteration_budget;
     const auto start = std::chrono::steady_clock::now();

@@ -1,5 +1,5 @@
 // Scanline order: rows of triangles swept one after another, the order a naive exporter or a
-// height-field generator produces. Castano's baseline ("Optimal Grid Rendering", 2009).
+// height-field generator produces. The baseline of Castano, "Optimal grid rendering", 2009.
 //
 // On a make_grid grid (mesh.grid set) it is the quads row by row, left to right, both triangles
 // of a quad together: 16x16 gives ACMR 1.062 / ATVR 1.882 at every FIFO size from 12 to 20, since
@@ -14,9 +14,8 @@
 #include <cmath>
 #include <numeric>
 
-#include <glm/common.hpp>
-
 #include "reorder/ordering.h"
+#include "scenes/bounding_box.h"
 
 namespace rastrace {
 
@@ -26,12 +25,8 @@ Ordering reorder_scanline(const Mesh& mesh, const ReorderParams& /*params*/) {
   std::iota(order.begin(), order.end(), 0u);
   if (mesh.grid || faces == 0) return list_ordering(mesh, std::move(order));
 
-  glm::vec3 lo(INFINITY), hi(-INFINITY);
-  for (const std::uint32_t v : mesh.indices) {
-    lo = glm::min(lo, mesh.positions[v]);
-    hi = glm::max(hi, mesh.positions[v]);
-  }
-  const glm::vec3 extent = hi - lo;
+  const BoundingBox box = bounding_box(mesh.positions, mesh.indices);
+  const glm::vec3 lo = box.lo, extent = box.extent();
   std::array<int, 3> axes = {0, 1, 2};
   std::stable_sort(axes.begin(), axes.end(), [&](int a, int b) { return extent[a] > extent[b]; });
   const int along = axes[0], across = axes[1];

@@ -1,8 +1,8 @@
 // Space-filling-curve orders: faces sorted by the Morton (Z-order) or Hilbert index of their
 // centroid, quantized over the bounding box of the mesh's vertices. Cache-oblivious: nearby
 // triangles end up near each other in the sequence whatever the cache size, but the curve knows
-// nothing of connectivity. Castano ("Optimal Grid Rendering", 2009) lists both as
-// baselines: 16x16 grid, FIFO 20/16/12, Morton ACMR 0.719/0.750/0.812, Hilbert 0.699/0.754/0.797.
+// nothing of connectivity. Castano ("Optimal grid rendering", 2009) lists both as baselines:
+// 16x16 grid, FIFO 20/16/12, Morton ACMR 0.719/0.750/0.812, Hilbert 0.699/0.754/0.797.
 //
 // Axes with no extent (a flat grid) are dropped so a planar mesh gets the 2D curve, not a slice
 // of the 3D one; each remaining axis is quantized to 16 bits. Hilbert indices come from
@@ -13,9 +13,8 @@
 #include <cmath>
 #include <numeric>
 
-#include <glm/common.hpp>
-
 #include "reorder/ordering.h"
+#include "scenes/bounding_box.h"
 
 namespace rastrace {
 
@@ -32,12 +31,8 @@ struct Cells {
 Cells quantized_centroids(const Mesh& mesh) {
   Cells cells;
   const std::size_t faces = mesh.face_count();
-  glm::vec3 lo(INFINITY), hi(-INFINITY);
-  for (const std::uint32_t v : mesh.indices) {
-    lo = glm::min(lo, mesh.positions[v]);
-    hi = glm::max(hi, mesh.positions[v]);
-  }
-  const glm::vec3 extent = hi - lo;
+  const BoundingBox box = bounding_box(mesh.positions, mesh.indices);
+  const glm::vec3 lo = box.lo, extent = box.extent();
   const float largest = std::max({extent.x, extent.y, extent.z});
   int axes[3];
   for (int a = 0; a < 3; ++a)

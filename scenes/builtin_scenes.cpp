@@ -6,6 +6,7 @@
 #include <glm/ext/matrix_transform.hpp>
 
 #include "core/error.h"
+#include "scenes/bounding_box.h"
 #include "scenes/mesh_io.h"
 #include "scenes/procedural.h"
 #include "scenes/scene_io.h"
@@ -72,15 +73,8 @@ Scene spider_scene() {
 }
 
 void frame(Scene& scene) {
-  glm::vec3 lo(0.0f), hi(0.0f);
-  bool first = true;
-  for (const SceneObject& object : scene.objects)
-    for (const glm::vec3& p : object.mesh.positions) {
-      const glm::vec3 w(object.transform * glm::vec4(p, 1.0f));
-      lo = first ? w : glm::min(lo, w), hi = first ? w : glm::max(hi, w);
-      first = false;
-    }
-  scene.camera = frame_bounds(lo, hi, static_cast<float>(scene.width) / static_cast<float>(scene.height));
+  const BoundingBox box = bounding_box(scene);
+  scene.camera = frame_bounds(box.lo, box.hi, static_cast<float>(scene.width) / static_cast<float>(scene.height));
 }
 
 }  // namespace

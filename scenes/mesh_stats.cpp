@@ -6,9 +6,8 @@
 #include <tuple>
 #include <vector>
 
-#include <glm/common.hpp>
-
 #include "core/error.h"
+#include "scenes/bounding_box.h"
 
 namespace rastrace {
 
@@ -24,11 +23,9 @@ MeshStats compute_mesh_stats(const Mesh& mesh) {
                            m.texture_source.checks);
   std::sort(sources.begin(), sources.end());
   stats.textures = static_cast<std::size_t>(std::unique(sources.begin(), sources.end()) - sources.begin());
-  if (!mesh.positions.empty()) {
-    stats.bounds_min = stats.bounds_max = mesh.positions[0];
-    for (const auto& p : mesh.positions)
-      stats.bounds_min = glm::min(stats.bounds_min, p), stats.bounds_max = glm::max(stats.bounds_max, p);
-  }
+  const BoundingBox box = bounding_box(mesh.positions);
+  stats.bounds_min = box.lo;
+  stats.bounds_max = box.hi;
 
   // Undirected edges as sorted 64-bit keys; runs of equal keys give each edge's face count.
   std::vector<std::uint64_t> edges;

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "scenes/bounding_box.h"
 #include "scenes/builtin_scenes.h"
 #include "scenes/mesh_io.h"
 #include "scenes/procedural.h"
@@ -55,22 +56,10 @@ class SceneReader {
     if (root.contains("camera")) {
       scene.camera = camera(root["camera"]);
     } else {
-      glm::vec3 lo(0.0f), hi(0.0f);
-      world_bounds(scene, lo, hi);
-      scene.camera = frame_bounds(lo, hi, static_cast<float>(scene.width) / static_cast<float>(scene.height));
+      const BoundingBox box = bounding_box(scene);
+      scene.camera = frame_bounds(box.lo, box.hi, static_cast<float>(scene.width) / static_cast<float>(scene.height));
     }
     return scene;
-  }
-
-  static void world_bounds(const Scene& scene, glm::vec3& lo, glm::vec3& hi) {
-    bool first = true;
-    for (const SceneObject& object : scene.objects)
-      for (const glm::vec3& p : object.mesh.positions) {
-        const glm::vec3 w = glm::vec3(object.transform * glm::vec4(p, 1.0f));
-        lo = first ? w : glm::min(lo, w);
-        hi = first ? w : glm::max(hi, w);
-        first = false;
-      }
   }
 
  private:
@@ -364,9 +353,8 @@ Scene load_scene(const std::string& spec) {
   Scene scene;
   scene.name = spec;
   scene.objects.push_back(SceneObject{load_mesh(spec), glm::mat4(1.0f)});
-  glm::vec3 lo(0.0f), hi(0.0f);
-  SceneReader::world_bounds(scene, lo, hi);
-  scene.camera = frame_bounds(lo, hi, static_cast<float>(scene.width) / static_cast<float>(scene.height));
+  const BoundingBox box = bounding_box(scene);
+  scene.camera = frame_bounds(box.lo, box.hi, static_cast<float>(scene.width) / static_cast<float>(scene.height));
   load_scene_textures(scene);
   return scene;
 }

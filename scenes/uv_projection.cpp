@@ -4,27 +4,16 @@
 #include <numbers>
 #include <string>
 
-#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
+#include "scenes/bounding_box.h"
 #include "scenes/procedural.h"
 
 namespace rastrace {
 
-namespace {
-
-void bounds(const Mesh& mesh, glm::vec3& lo, glm::vec3& hi) {
-  lo = hi = mesh.positions.empty() ? glm::vec3(0.0f) : mesh.positions[0];
-  for (const auto& p : mesh.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-}
-
-}  // namespace
-
 void project_uvs_spherical(Mesh& mesh) {
-  glm::vec3 lo, hi;
-  bounds(mesh, lo, hi);
-  const glm::vec3 centre = (lo + hi) * 0.5f;
+  const glm::vec3 centre = bounding_box(mesh.positions).centre();
   mesh.uvs.resize(mesh.positions.size());
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
     const glm::vec3 d = mesh.positions[v] - centre;
@@ -45,8 +34,8 @@ void project_uvs_planar(Mesh& mesh, int axis) {
   static constexpr int kU[3] = {2, 0, 0};
   static constexpr int kV[3] = {1, 2, 1};
   const int ua = kU[axis], va = kV[axis];
-  glm::vec3 lo, hi;
-  bounds(mesh, lo, hi);
+  const BoundingBox box = bounding_box(mesh.positions);
+  const glm::vec3 lo = box.lo, hi = box.hi;
   const float u_extent = hi[ua] - lo[ua], v_extent = hi[va] - lo[va];
   mesh.uvs.resize(mesh.positions.size());
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {

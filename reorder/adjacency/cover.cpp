@@ -3,21 +3,10 @@
 #include <chrono>
 
 #include "core/progress.h"
+#include "core/rng.h"
 
 namespace rastrace {
 namespace {
-
-// splitmix64: the same sequence on every platform, unlike std:: distributions.
-struct Random {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  std::uint32_t below(std::uint32_t n) { return static_cast<std::uint32_t>(next() % n); }
-};
 
 // A maximal independent set of the interior faces with its tightness counts (the number of
 // neighbours in the set) kept current, and an undo log of the changes of one iteration.
@@ -72,12 +61,12 @@ class IndependentSet {
   }
 
   // One iteration of perturbation plus local search; returns false if there is nothing to do.
-  void iterate(Random& random) {
+  void iterate(Rng& random) {
     if (interior_.empty()) return;
     ++clock_;
     std::uint32_t v = kNoFace;
     for (int attempt = 0; attempt < 16 && v == kNoFace; ++attempt) {
-      const std::uint32_t f = interior_[random.below(static_cast<std::uint32_t>(interior_.size()))];
+      const std::uint32_t f = interior_[random.below(interior_.size())];
       if (!in_[f] && tabu_until_[f] <= clock_) v = f;
     }
     if (v == kNoFace) return;
@@ -91,7 +80,7 @@ class IndependentSet {
       const std::uint32_t w = nb_[3 * v + i];
       if (w != kNoFace && in_[w]) {
         remove(w);
-        tabu_until_[w] = clock_ + 1 + random.below(kTenure);
+        tabu_until_[w] = clock_ + 1 + static_cast<std::uint32_t>(random.below(kTenure));
         removed[removed_count++] = w;
       }
     }
@@ -219,7 +208,7 @@ CoverResult find_adjacency_cover(const AdjacencyDual& dual, const CoverParams& p
 
   const std::uint64_t iterations =
       params.max_iterations >= 0 ? static_cast<std::uint64_t>(params.max_iterations) : 20ull * dual.face_count;
-  Random random{params.seed};
+  Rng random(params.seed);
   Progress progress("cover", iterations);
   constexpr std::uint64_t kChunk = 4096;
   std::uint64_t done = 0;

@@ -20,14 +20,14 @@
 //   from 2 to 5 misses per remaining primitive. Linear time, independent of the cache size;
 //   CM/V 1.64-1.72 at cache 24 (the paper: 1.76-1.82).
 // - baseline: kcache (reorder/kcache.cpp, Lin and Yu's method for plain triangles) run on the
-//   cover faces alone, as a triangle mesh, each primitive following its cover face: the project's
-//   definition of the off-the-shelf method. CM/V 2.0-2.5 at cache 24. `gain` is measured
+//   cover faces alone, as a triangle mesh, each primitive following its cover face: the
+//   off-the-shelf method applied to the primitives. CM/V 2.46-2.92 at cache 24. `gain` is measured
 //   against it.
 // - baseline-mesh: kcache run on all the mesh's faces, as an engine that reorders its triangle
 //   buffer would, and the mesh then drawn in that order with each face drawn by the primitive
 //   that holds it (as cover or assigned face): each primitive is placed at the first of its
 //   two faces. The paper's "naive application of previous reordering methods" read literally.
-//   CM/V 2.35-2.91 at cache 24; the paper's baseline (careful CM/V x gain in its Table 1) is
+//   CM/V 2.79-3.13 at cache 24; the paper's baseline (careful CM/V x gain in its Table 1) is
 //   2.5-3.0. `gain_mesh` is measured against it.
 #pragma once
 

@@ -4,32 +4,25 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "core/error.h"
+#include "core/enum_names.h"
 #include "reorder/adjacency/order.h"
 #include "reorder/ordering.h"
 
 namespace rastrace {
 
-const char* to_string(AdjacencyOrder order) {
-  switch (order) {
-    case AdjacencyOrder::Careful:
-      return "careful";
-    case AdjacencyOrder::Fast:
-      return "fast";
-    case AdjacencyOrder::Baseline:
-      return "baseline";
-    case AdjacencyOrder::BaselineMesh:
-      return "baseline-mesh";
-  }
-  return "?";
-}
+namespace {
+
+constexpr EnumName<AdjacencyOrder> kOrders[] = {{AdjacencyOrder::Careful, "careful"},
+                                                {AdjacencyOrder::Fast, "fast"},
+                                                {AdjacencyOrder::Baseline, "baseline"},
+                                                {AdjacencyOrder::BaselineMesh, "baseline-mesh"}};
+
+}  // namespace
+
+const char* to_string(AdjacencyOrder order) { return enum_to_string(order, kOrders); }
 
 AdjacencyOrder parse_adjacency_order(const std::string& text) {
-  if (text == "careful") return AdjacencyOrder::Careful;
-  if (text == "fast") return AdjacencyOrder::Fast;
-  if (text == "baseline") return AdjacencyOrder::Baseline;
-  if (text == "baseline-mesh") return AdjacencyOrder::BaselineMesh;
-  throw InputError("unknown adjacency ordering '" + text + "': expected careful, fast, baseline or baseline-mesh");
+  return parse_enum(text, kOrders, "adjacency ordering");
 }
 
 std::vector<std::uint32_t> order_adjacency_baseline(const Mesh& mesh, const AdjacencyPrimitives& primitives,

@@ -5,6 +5,7 @@
 
 #include <glm/ext/matrix_transform.hpp>
 
+#include "scenes/bounding_box.h"
 #include "scenes/procedural.h"
 #include "scenes/scene_io.h"
 #include "scenes/texture_io.h"
@@ -143,12 +144,8 @@ Scene grazing_plane_scene() {
 
 Scene bunny_checker_scene(int width, int height) {
   Scene scene = textured_bunny(width, height, 256, 16);
-  glm::vec3 lo(1e30f), hi(-1e30f);
-  for (const glm::vec3& p : scene.objects[0].mesh.positions) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  scene.camera = frame_bounds(lo, hi, static_cast<float>(width) / static_cast<float>(height));
+  const BoundingBox box = bounding_box(scene.objects[0].mesh.positions);
+  scene.camera = frame_bounds(box.lo, box.hi, static_cast<float>(width) / static_cast<float>(height));
   scene.camera.fov_y_degrees = 45.0f;
   return scene;
 }
