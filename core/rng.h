@@ -26,10 +26,16 @@ class Rng {
 
   // A value in [0, n), n > 0. The modulo's bias is below n / 2^64: negligible for any n used here.
   std::uint64_t below(std::uint64_t n) { return next() % n; }
+  // A double in [0, 1): the top 53 bits of next().
+  double uniform() { return double(next() >> 11) * 0x1.0p-53; }
 
  private:
   std::uint64_t state_;
 };
+
+// splitmix64 of one value: a well-mixed 64-bit hash of x (the first output of Rng(x)), for
+// seeded tie-breaking without a generator's state.
+inline std::uint64_t mix64(std::uint64_t x) { return Rng(x).next(); }
 
 // Fisher-Yates: a uniformly random permutation of `values`, the same for a given generator state
 // on every platform.

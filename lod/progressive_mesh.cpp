@@ -15,6 +15,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/error.h"
+#include "core/rng.h"
 #include "lod/progressive_mesh_input.h"
 #include "lod/progressive_mesh_quadric.h"
 
@@ -22,13 +23,6 @@ namespace rastrace {
 namespace {
 
 using lod_detail::Quadric;
-
-std::uint64_t mix64(std::uint64_t x) {  // splitmix64's finaliser
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
 
 struct Candidate {
   double cost;

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
+#include "core/rng.h"
 
 namespace rastrace {
 namespace {
@@ -144,19 +145,6 @@ class TriangleGrid {
   std::uint32_t query_ = 0;
 };
 
-// A reproducible double in [0, 1) from splitmix64 (independent of the standard library's
-// distributions, which differ between implementations).
-struct Random {
-  std::uint64_t state;
-  double next() {
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return double(z >> 11) * 0x1.0p-53;
-  }
-};
-
 // Mean and max distance from area-uniform samples on `from` to the surface in `grid`.
 std::pair<double, double> one_way(std::span<const glm::vec3> positions, std::span<const Triangle> from,
                                   TriangleGrid& grid, std::uint32_t samples, std::uint64_t seed) {
@@ -168,16 +156,16 @@ std::pair<double, double> one_way(std::span<const glm::vec3> positions, std::spa
     cumulative[t] = total;
   }
   if (!(total > 0)) throw InputError("surface distance: a triangle set has no area");
-  Random random{seed};
+  Rng random(seed);
   double sum = 0, max = 0;
   for (std::uint32_t s = 0; s < samples; ++s) {
-    const double pick = random.next() * total;
+    const double pick = random.uniform() * total;
     const std::size_t t = std::min<std::size_t>(
         std::size_t(std::upper_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin()),
         from.size() - 1);
     const glm::dvec3 a(positions[from[t][0]]), b(positions[from[t][1]]), c(positions[from[t][2]]);
     // Uniform point in a triangle: Turk, "Generating Random Points in Triangles" (Graphics Gems, 1990).
-    const double r1 = std::sqrt(random.next()), r2 = random.next();
+    const double r1 = std::sqrt(random.uniform()), r2 = random.uniform();
     const glm::dvec3 p = a * (1 - r1) + b * (r1 * (1 - r2)) + c * (r1 * r2);
     const double d = std::sqrt(grid.nearest2(p));
     sum += d;
