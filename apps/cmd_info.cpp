@@ -7,6 +7,7 @@
 
 #include "apps/commands.h"
 #include "core/table.h"
+#include "scenes/bounding_box.h"
 #include "scenes/mesh_stats.h"
 #include "scenes/scene_io.h"
 #include "scenes/text_parse.h"
@@ -65,11 +66,9 @@ void run_info(const std::string& spec, bool as_json) {
     ObjectInfo info;
     info.name = object.mesh.name;
     info.stats = compute_mesh_stats(object.mesh);
-    for (std::size_t v = 0; v < object.mesh.positions.size(); ++v) {
-      const glm::vec3 w(object.transform * glm::vec4(object.mesh.positions[v], 1.0f));
-      info.lo = v == 0 ? w : glm::min(info.lo, w);
-      info.hi = v == 0 ? w : glm::max(info.hi, w);
-    }
+    const BoundingBox box = bounding_box(object.mesh.positions, object.transform);
+    info.lo = box.lo;
+    info.hi = box.hi;
     lo = i == 0 ? info.lo : glm::min(lo, info.lo);
     hi = i == 0 ? info.hi : glm::max(hi, info.hi);
     total.vertices += info.stats.vertices;

@@ -12,6 +12,7 @@
 #include "reorder/adjacency/bound.h"
 #include "reorder/adjacency/build.h"
 #include "reorder/ordering.h"
+#include "scenes/bounding_box.h"
 
 namespace rastrace {
 
@@ -24,13 +25,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 MeshView frame_mesh(const Mesh& mesh, glm::vec3 direction, float aspect) {
-  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-  for (const glm::vec3& p : mesh.positions) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  const glm::vec3 centre = 0.5f * (lo + hi);
-  const float radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);
+  const BoundingBox box = bounding_box(mesh.positions);
+  const glm::vec3 centre = box.centre();
+  const float radius = std::max(0.5f * glm::length(box.extent()), 1e-6f);
   const glm::vec3 eye = centre + glm::normalize(direction) * radius * 2.6f;
   MeshView camera;
   camera.view = glm::lookAt(eye, centre, glm::vec3(0, 1, 0));

@@ -3,16 +3,17 @@
 #include <algorithm>
 #include <string>
 
+#include "core/enum_names.h"
 #include "core/error.h"
 
 namespace rastrace {
 
-CullMode parse_cull_mode(const std::string& text) {
-  if (text == "none") return CullMode::None;
-  if (text == "back") return CullMode::Back;
-  if (text == "front") return CullMode::Front;
-  throw InputError("unknown cull mode '" + text + "': expected none, back or front");
-}
+namespace {
+constexpr EnumName<CullMode> kCullModes[] = {
+    {CullMode::None, "none"}, {CullMode::Back, "back"}, {CullMode::Front, "front"}};
+}  // namespace
+
+CullMode parse_cull_mode(const std::string& text) { return parse_enum(text, kCullModes, "cull mode"); }
 
 namespace {
 constexpr std::size_t kFetchBatch = 1024;
