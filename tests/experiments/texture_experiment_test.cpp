@@ -116,11 +116,11 @@ TEST(TextureExperiment, ASceneWithoutTexturesIsAClearError) {
 // One metadata builder: a texsweep or report trace states the same settings, cull, lod and
 // lighting included, as `rastrace render --trace` of the same frame.
 TEST(TextureExperiment, TracesCarryTheSameMetadataAsRenderTraces) {
-  const std::string dir = temporary_dir("metadata");
+  const testing::TempDir dir;
   const testing::CommandRun rendered =
-      testing::run_rastrace("render builtin:grid --order strip --cull back --raster tiled8 -o " + dir +
-                            "/frame.png --trace " + dir + "/render.rtrace");
-  ASSERT_EQ(rendered.status, 0) << rendered.out;
+      testing::run_rastrace({"render", "builtin:grid", "--order", "strip", "--cull", "back", "--raster", "tiled8", "-o",
+                             dir.file("frame.png"), "--trace", dir.file("render.rtrace")});
+  ASSERT_EQ(rendered.exit_code, 0) << rendered.err;
 
   TextureExperiment experiment;
   experiment.render.scene = "builtin:grid";
@@ -129,18 +129,17 @@ TEST(TextureExperiment, TracesCarryTheSameMetadataAsRenderTraces) {
   experiment.rasters = {"tiled8"};
   experiment.vertex_cache = VertexCacheSpec{VertexCachePolicy::Fifo, 16};
   experiment.sweep.sizes = {1024};
-  experiment.trace_dir = dir + "/texsweep";
+  experiment.trace_dir = dir.file("texsweep");
   const std::vector<TextureRun> runs = run_texture_experiment(experiment);
   ASSERT_EQ(runs.size(), 1u);
 
-  const TraceMetadata from_render = TraceReader(dir + "/render.rtrace").metadata();
+  const TraceMetadata from_render = TraceReader(dir.file("render.rtrace")).metadata();
   const TraceMetadata from_experiment = TraceReader(runs[0].trace_path).metadata();
   EXPECT_EQ(from_experiment, from_render);
   EXPECT_EQ(from_experiment.extra.at("cull"), "back");
   EXPECT_EQ(from_experiment.extra.at("lod"), "lengths");
   EXPECT_EQ(from_experiment.extra.at("lighting"), "off");
   EXPECT_EQ(from_experiment.extra.at("raster"), "tiled8");
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
