@@ -114,7 +114,7 @@ TEST(LiveReplay, StripRestartingAt0xFFFFFFFFCountsItsRestartsLiveAndReplayed) {
   PipelineStats rendered;
   {
     TraceWriter writer(path, TraceMetadata{});
-    Tee tee(live, writer);
+    testing::TeeSink tee(live, writer);
     Framebuffer framebuffer(64, 64);
     Pipeline pipeline(framebuffer, PipelineOptions{}, &tee);
     DrawCall call;

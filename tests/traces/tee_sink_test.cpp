@@ -15,7 +15,7 @@ class LoggingSink final : public EventSink {
  public:
   void begin_draw(const DrawInfo& draw) override {
     log.push_back("begin_draw " + std::to_string(draw.draw) + " type " + std::to_string(int(draw.type)) + " restart " +
-                  std::to_string(draw.restart_index));
+                  (draw.restart_index ? std::to_string(*draw.restart_index) : std::string("none")));
   }
   void vertex_fetches(std::span<const VertexFetch> fetches) override {
     std::string line = "vertex_fetches";
