@@ -2,12 +2,12 @@
 // primitives (Sander, Nehab, Chlamtac, Hoppe 2008). Builds the cover, its lower bound and the
 // restricted assignment, orders the primitives, and makes one table row per ordering: faces, dual
 // edges, |C| (and % of faces), B, C/B, primitives and indices per face, misses and CM/V in a FIFO
-// post-transform cache, and two gains (baseline misses / the row's misses): `gain` over
-// `baseline` (kcache on the cover faces alone) and `gain_mesh` over `baseline-mesh` (kcache on
-// all the mesh's faces, each primitive drawn at its first face: the paper's naive use of a
-// triangle method). The naive scheme (one primitive per face, ordered by kcache) can be added for
-// comparison. With edges, each ordering is drawn through the pipeline with the edge stage
-// (pipeline/edge_stage.h), from a camera that frames the mesh, and its counts are added.
+// post-transform cache, and three gains (baseline misses / the row's misses): `gain` over
+// `baseline` (kcache on the cover faces alone), `gain_mesh` over `baseline-mesh` (kcache on all
+// the mesh's faces, each primitive drawn at its first face: the paper's naive use of a triangle
+// method) and `gain_naive` over the naive scheme (one primitive per face, faces in kcache's
+// order), whose row can be added for comparison. With edges, each ordering is drawn through the pipeline with the edge
+// stage (pipeline/edge_stage.h), from a camera that frames the mesh, and its counts are added.
 #pragma once
 
 #include <array>

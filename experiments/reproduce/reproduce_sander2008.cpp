@@ -1,13 +1,18 @@
 // Sander, Nehab, Chlamtac, Hoppe 2008, Table 1: triangle-with-adjacency primitives at a FIFO of 24.
 // C/B, and CM/V with the gain for the careful and fast orderings (reorder/adjacency/order.h), over
-// both baselines: kcache on the cover faces, and kcache on the whole mesh (baseline-mesh). The paper's fandisk has
+// three baselines: kcache on the cover faces (baseline, the paper's description), kcache on the whole
+// mesh with each primitive at its first face (baseline-mesh), and one primitive per face in kcache's
+// order (naive). Each gain row names the baseline whose gain is closest to the paper's. The paper's fandisk has
 // 9,926 faces and its bunny 69,473; CGAL's copies have 12,946 and 75,408, so the rows compare like for like only in
 // spirit.
+#include <cmath>
+
 #include "cache_sim/vertex_cache.h"
 #include "experiments/reproduce/reproduce.h"
 #include "reorder/adjacency/bound.h"
 #include "reorder/adjacency/build.h"
 #include "reorder/adjacency/order.h"
+#include "reorder/ordering.h"
 #include "scenes/mesh_io.h"
 
 namespace rastrace {
@@ -16,11 +21,44 @@ namespace {
 
 constexpr unsigned kCache = 24;
 
-double misses_in_order(const Mesh& mesh, const AdjacencyPrimitives& primitives, AdjacencyOrder order) {
-  const AdjacencyPrimitives ordered = permute_primitives(primitives, order_adjacency(order, mesh, primitives, kCache));
+double misses_of(const AdjacencyPrimitives& ordered) {
   return double(
       simulate_vertex_stream(ordered.indices, PrimitiveType::TriangleListAdjacency, VertexCachePolicy::Fifo, kCache)
           .misses);
+}
+
+double naive_misses(const Mesh& mesh, const AdjacencyBuild& build) {
+  ReorderParams params;
+  params.cache_size = kCache;
+  const Ordering faces = find_reorder_algorithm("kcache").run(mesh, params);
+  return misses_of(permute_primitives(encode_one_primitive_per_face(mesh, build.dual), faces.face_order));
+}
+
+double misses_in_order(const Mesh& mesh, const AdjacencyPrimitives& primitives, AdjacencyOrder order) {
+  return misses_of(permute_primitives(primitives, order_adjacency(order, mesh, primitives, kCache)));
+}
+
+struct Baseline {
+  const char* name;
+  const char* what;
+  double misses;
+};
+
+// One figure per baseline: the ordering's gain over it beside the paper's, each noting which of
+// the three gains is closest to the paper's (by absolute difference).
+void add_gains(std::vector<ReproducedFigure>& figures, const ReproducedFigure& base, const std::string& order,
+               double published, double misses, const Baseline (&baselines)[3]) {
+  std::size_t closest = 0;
+  for (std::size_t i = 1; i < 3; ++i)
+    if (std::abs(baselines[i].misses / misses - published) < std::abs(baselines[closest].misses / misses - published))
+      closest = i;
+  for (const Baseline& baseline : baselines) {
+    ReproducedFigure figure = base;
+    figure.figure += order + " gain (" + baseline.name + ")";
+    figure.ours = baseline.misses / misses;
+    figure.note += std::string("; over ") + baseline.what + "; closest to the paper: " + baselines[closest].name;
+    figures.push_back(std::move(figure));
+  }
 }
 
 }  // namespace
@@ -45,10 +83,6 @@ std::vector<ReproducedFigure> reproduce_sander2008() {
   std::vector<ReproducedFigure> figures;
   for (const Row& row : rows) {
     const std::string figure = std::string(row.name) + ", cache 24: ";
-    const std::string gain_note =
-        std::string(row.note) + "; gain over " + to_string(AdjacencyOrder::Baseline) + " (reorder/adjacency/order.h)";
-    const std::string mesh_gain_note = std::string(row.note) + "; gain over " +
-                                       to_string(AdjacencyOrder::BaselineMesh) + " (kcache on the whole mesh)";
     if (!*row.our_mesh) {
       for (const auto& [what, value] : {std::pair{"C/B", row.c_over_b},
                                         {"careful CM/V", row.careful},
@@ -62,23 +96,22 @@ std::vector<ReproducedFigure> reproduce_sander2008() {
     const AdjacencyBuild build = build_adjacency_primitives(mesh);
     const CoverBound bound = adjacency_cover_lower_bound(mesh, build.dual);
     const double vertices = double(mesh.vertex_count());
-    const double baseline = misses_in_order(mesh, build.primitives, AdjacencyOrder::Baseline);
-    const double baseline_mesh = misses_in_order(mesh, build.primitives, AdjacencyOrder::BaselineMesh);
+    const Baseline baselines[3] = {
+        {"baseline", "kcache on the cover faces", misses_in_order(mesh, build.primitives, AdjacencyOrder::Baseline)},
+        {"baseline-mesh", "kcache on the whole mesh, each primitive at its first face",
+         misses_in_order(mesh, build.primitives, AdjacencyOrder::BaselineMesh)},
+        {"naive", "one primitive per face in kcache's order", naive_misses(mesh, build)}};
     const double careful = misses_in_order(mesh, build.primitives, AdjacencyOrder::Careful);
     const double fast = misses_in_order(mesh, build.primitives, AdjacencyOrder::Fast);
     figures.push_back({paper, figure + "C/B", row.paper_mesh, row.our_mesh, row.c_over_b,
                        double(build.cover.size) / bound.bound, row.note});
     figures.push_back(
         {paper, figure + "careful CM/V", row.paper_mesh, row.our_mesh, row.careful, careful / vertices, row.note});
-    figures.push_back({paper, figure + "careful gain", row.paper_mesh, row.our_mesh, row.careful_gain,
-                       baseline / careful, gain_note});
-    figures.push_back({paper, figure + "careful gain (baseline-mesh)", row.paper_mesh, row.our_mesh, row.careful_gain,
-                       baseline_mesh / careful, mesh_gain_note});
+    add_gains(figures, {paper, figure, row.paper_mesh, row.our_mesh, row.careful_gain, {}, row.note}, "careful",
+              row.careful_gain, careful, baselines);
     figures.push_back({paper, figure + "fast CM/V", row.paper_mesh, row.our_mesh, row.fast, fast / vertices, row.note});
-    figures.push_back(
-        {paper, figure + "fast gain", row.paper_mesh, row.our_mesh, row.fast_gain, baseline / fast, gain_note});
-    figures.push_back({paper, figure + "fast gain (baseline-mesh)", row.paper_mesh, row.our_mesh, row.fast_gain,
-                       baseline_mesh / fast, mesh_gain_note});
+    add_gains(figures, {paper, figure, row.paper_mesh, row.our_mesh, row.fast_gain, {}, row.note}, "fast",
+              row.fast_gain, fast, baselines);
   }
   return figures;
 }

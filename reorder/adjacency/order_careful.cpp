@@ -13,9 +13,9 @@ constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 // A resident vertex that a ring completes will never be reloaded; one about to leave the FIFO
 // would most likely have been, so the bonus grows with its age: kCompletionWeight * age / K
 // misses. Chosen at FIFO 24 on fandisk, triceratops and bunny00, checked at 12-32 (with 0, CM/V at 24 is
-// 1-2.4% higher). The misses are counted per ring, not per primitive: dividing by the ring's size
-// (as kcache does for triangles) made CM/V 6-9% higher. Costs are kept in units of 1/K miss so
-// that they are exact integers.
+// 1-2.4% higher) and on meshes it was not tuned on: elephant, mushroom and cow (docs/PERFORMANCE.md). The misses are
+// counted per ring, not per primitive: dividing by the ring's size (as kcache does for triangles) made CM/V 6-9%
+// higher. Costs are kept in units of 1/K miss so that they are exact integers.
 constexpr std::int64_t kCompletionWeight = 2;
 // Look-ahead: the kBreadth[0] cheapest rings are each tried, then after each the kBreadth[1]
 // cheapest next rings, then the best third ring is costed; the first ring of the cheapest

@@ -45,6 +45,10 @@ TEST(AdjacencyCommand, JsonRowsCarryCoverBoundCacheMissesAndGain) {
   EXPECT_DOUBLE_EQ(rows[3].at("gain_mesh").get<double>(), 1.0);
   EXPECT_NEAR(rows[0].at("gain").get<double>(), 6962.0 / 4084.0, 1e-9);       // misses of baseline / careful
   EXPECT_NEAR(rows[0].at("gain_mesh").get<double>(), 7886.0 / 4084.0, 1e-9);  // baseline-mesh / careful
+  EXPECT_DOUBLE_EQ(rows[4].at("gain_naive").get<double>(), 1.0);
+  EXPECT_NEAR(rows[0].at("gain_naive").get<double>(), 10865.0 / 4084.0, 1e-9);  // naive / careful
+  EXPECT_NEAR(rows[0].at("gain_naive").get<double>(), 2.660, 0.0005);
+  EXPECT_NEAR(rows[2].at("gain_naive").get<double>(), 1.561, 0.0005);  // even the baseline beats one per face
   EXPECT_LT(rows[4].at("gain").get<double>(), 1.0);  // one primitive per face is worse than both baselines
   EXPECT_LT(rows[4].at("gain_mesh").get<double>(), 1.0);
 
