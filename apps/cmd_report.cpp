@@ -12,11 +12,9 @@ namespace {
 
 struct ReportCommand {
   ReportSpec spec;
-  SweepFlags sweep{.sizes = "1KiB..64KiB",
-                   .lines = "64B",
-                   .assocs = "full",
-                   .policies = "fifo,lru,opt",
-                   .layouts = "linear,block4,block8,morton"};
+  SweepFlags sweep{
+      .tcache = "size=1KiB..64KiB,line=64B,assoc=full,policy=fifo/lru/opt,layout=linear/block4/block8/morton",
+      .old_flags = {}};
 };
 
 }  // namespace
@@ -37,7 +35,8 @@ void add_report_command(CLI::App& app) {
   command->footer(
       "Examples:\n"
       "  rastrace report                       # builtin:bunny into out/\n"
-      "  rastrace report builtin:spider -o out/spider --layout block4 --policy lru,opt");
+      "  rastrace report builtin:spider -o out/spider --tcache "
+      "size=1KiB..64KiB,assoc=full,policy=lru/opt,layout=block4");
   command->callback([c] {
     ReportSpec report = c->spec;
     report.sweep = sweep_spec_from(c->sweep);

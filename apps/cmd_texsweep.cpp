@@ -1,8 +1,9 @@
 // `rastrace texsweep [SCENE] [--experiment fig6|fig7|fig9|fig11] [--order strip,texgroup]
-//  [--raster scanline,tiled8] [--size 1KiB..64KiB] [--policy fifo,lru,opt] [--layout ...]`:
+//  [--raster scanline,tiled8] [--tcache size=1KiB..64KiB,policy=fifo/lru/opt,layout=...]`:
 // renders the scene once per triangle ordering and traversal order, records each texel trace and
 // sweeps texture caches over it (texture_experiment.h). The named experiments are the figures of
 // Yang, Mitra and Huang; explicit flags override what an experiment sets.
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -61,11 +62,9 @@ struct TexsweepCommand {
   std::string filter = "trilinear";
   std::string wrap = "repeat";
   std::string cull = "back";
-  SweepFlags sweep{.sizes = "1KiB..64KiB",
-                   .lines = "64B",
-                   .assocs = "full",
-                   .policies = "fifo,lru,opt",
-                   .layouts = "linear,block4,block8,morton"};
+  SweepFlags sweep{
+      .tcache = "size=1KiB..64KiB,line=64B,assoc=full,policy=fifo/lru/opt,layout=linear/block4/block8/morton",
+      .old_flags = {}};
   std::string format = "md";
   std::string output;
   std::string plot_dir;
@@ -102,7 +101,12 @@ void run_texsweep(const TexsweepCommand& command, const CLI::App& app) {
     experiment.title = preset.title;
     if (c.scene.empty()) c.scene = preset.scene;
     if (app.count("--order") == 0) c.orders = preset.orders;
-    if (app.count("--policy") == 0) c.sweep.policies = preset.policies;
+    if (app.count("--tcache") == 0) {  // the figure's policies in the default sweep
+      std::string policies = preset.policies;
+      std::replace(policies.begin(), policies.end(), ',', '/');
+      const std::size_t at = c.sweep.tcache.find("policy=");
+      c.sweep.tcache.replace(at, c.sweep.tcache.find(',', at) - at, "policy=" + policies);
+    }
   }
   if (c.scene.empty()) throw InputError("texsweep: expected a SCENE or an --experiment");
   const TableFormat format = parse_table_format(c.format);
@@ -163,8 +167,10 @@ void add_texsweep_command(CLI::App& app) {
   command->footer(
       "Examples:\n"
       "  rastrace texsweep --experiment fig9 --plot out/plots\n"
-      "  rastrace texsweep builtin:spider --order strip,texgroup,tipsy --policy lru --layout block4 --format csv\n"
-      "  rastrace texsweep builtin:bunny --size 1KiB..16KiB --line 32B,64B --assoc 2,4,full --raster scanline");
+      "  rastrace texsweep builtin:spider --order strip,texgroup,tipsy --tcache "
+      "size=1KiB..64KiB,assoc=full,policy=lru,layout=block4 "
+      "--format csv\n"
+      "  rastrace texsweep builtin:bunny --tcache size=1KiB..16KiB,line=32B/64B,assoc=2/4/full --raster scanline");
   command->callback([c, command] { run_texsweep(*c, *command); });
 }
 

@@ -1,8 +1,9 @@
-// The byte-cache sweep flags shared by `rastrace sweep` and `rastrace texsweep`: --size, --line,
-// --assoc, --policy, --layout, --texel, --align, --seed, parsed into a SweepSpec.
+// The texture-cache sweep option shared by `rastrace texsweep` and `rastrace report`: one
+// byte-cache spec of the cache-spec grammar (cache_sim/cache_spec.h) with alternatives, e.g.
+// --tcache size=1KiB..64KiB,assoc=full,policy=fifo/lru/opt,layout=linear/morton.
 #pragma once
 
-#include <cstdint>
+#include <map>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -12,18 +13,15 @@
 namespace rastrace {
 
 struct SweepFlags {
-  std::string sizes = "1KiB..64KiB";
-  std::string lines = "64B";
-  std::string assocs = "4";
-  std::string policies = "lru";
-  std::string layouts = "linear";
-  std::string texel = "4B";
-  std::string align = "4KiB";
-  std::uint64_t seed = 1;
+  std::string tcache;
+  // The per-axis flags the spec replaced (--size, --line, ...): given, they are an error that
+  // shows the spec to write.
+  std::map<std::string, std::string> old_flags;
 };
 
 void add_sweep_flags(CLI::App& command, SweepFlags& flags);
-// Throws InputError naming the flag for a malformed value. The source stays Texel.
+// The texel-trace sweep the spec stands for. Throws InputError for a malformed spec, a vertex
+// cache spec, or one of the retired flags.
 SweepSpec sweep_spec_from(const SweepFlags& flags);
 
 }  // namespace rastrace

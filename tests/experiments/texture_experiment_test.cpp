@@ -80,8 +80,8 @@ TEST(TextureExperiment, LiveRenderAgreesWithTheSweptTraceToTheMiss) {
         run({"render", scene, "--order", order, "--cull", "back", "--tcache",
              "size=4KiB,line=64B,assoc=full,policy=lru,layout=linear", "-o", dir.file("frame.png"), "--json"}));
     const auto swept = nlohmann::json::parse(
-        run({"texsweep", scene, "--order", order,  "--cull",   "back", "--raster", "scanline", "--size",   "4KiB",
-             "--line",   "64B", "--assoc", "full", "--policy", "lru",  "--layout", "linear",   "--format", "json"}));
+        run({"texsweep", scene, "--order", order, "--cull", "back", "--raster", "scanline", "--tcache",
+             "size=4KiB,line=64B,assoc=full,policy=lru,layout=linear", "--format", "json"}));
     ASSERT_EQ(swept.size(), 1u);
     EXPECT_EQ(live[0]["texture_misses"], swept[0]["misses"]) << scene << " " << order;
     EXPECT_EQ(live[0]["texel_accesses"], swept[0]["accesses"]) << scene << " " << order;
@@ -91,14 +91,27 @@ TEST(TextureExperiment, LiveRenderAgreesWithTheSweptTraceToTheMiss) {
 
 TEST(TextureExperiment, RerunningTheSameCommandGivesByteIdenticalTables) {
   for (const char* format : {"md", "json"}) {
-    const std::vector<std::string> command = {"texsweep", "builtin:grid",  "--order",  "tipsy,texgroup",
-                                              "--base",   "tipsy",         "--raster", "scanline,tiled8",
-                                              "--size",   "1KiB..4KiB",    "--policy", "fifo,lru,opt",
-                                              "--layout", "linear,morton", "--format", format};
+    const std::vector<std::string> command = {
+        "texsweep", "builtin:grid",
+        "--order",  "tipsy,texgroup",
+        "--base",   "tipsy",
+        "--raster", "scanline,tiled8",
+        "--tcache", "size=1KiB..4KiB,assoc=full,policy=fifo/lru/opt,layout=linear/morton",
+        "--format", format};
     const std::string first = run(command);
     EXPECT_FALSE(first.empty());
     EXPECT_EQ(first, run(command)) << format;
   }
+}
+
+TEST(TextureExperiment, TheRetiredPerAxisSweepFlagsShowTheCacheSpecToWrite) {
+  const testing::CommandRun r =
+      testing::run_rastrace({"texsweep", "builtin:grid", "--size", "1KiB,4KiB", "--policy", "lru"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("write --tcache size=1KiB/4KiB,policy=lru"), std::string::npos) << r.err;
+  const testing::CommandRun vertex = testing::run_rastrace({"report", "builtin:grid", "--tcache", "entries=16"});
+  EXPECT_EQ(vertex.exit_code, 1);
+  EXPECT_NE(vertex.err.find("expected a byte-cache spec"), std::string::npos) << vertex.err;
 }
 
 TEST(TextureExperiment, ASceneWithoutTexturesIsAClearError) {
