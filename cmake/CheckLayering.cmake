@@ -17,7 +17,7 @@ set(RASTRACE_MODULE_DAG
   "reorder_adjacency: reorder"
   "lod: reorder cache_sim scenes"
   "raster: scenes traces"
-  "pipeline: raster cache_sim"
+  "pipeline: raster cache_sim reorder"
   "reference: pipeline"
   "experiments: reference pipeline raster reorder_adjacency reorder lod cache_sim traces scenes core"
   "rastrace_commands: experiments"

@@ -18,7 +18,7 @@ namespace rastrace {
 struct VipmDraw {
   PrimitiveType type = PrimitiveType::TriangleList;
   std::span<const std::uint32_t> indices;  // what is sent; strips restart at restart_index
-  std::uint32_t restart_index = kNoRestart;
+  RestartIndex restart_index = kNoRestart;
   std::uint32_t vertex_count = 0;   // the vertex range handed to the draw: 0 .. vertex_count - 1
   std::uint64_t index_address = 0;  // byte address of indices[0] (global buffers first, then the instance's)
 };

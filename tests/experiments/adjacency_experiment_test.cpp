@@ -31,8 +31,8 @@ TEST(AdjacencyExperiment, TheCommandPrintsTheExperimentsTable) {
   const Mesh mesh = load_mesh(path);
   const AdjacencyResult result = run_adjacency_experiment(mesh, careful_with_edges(path), nullptr);
   const testing::CommandRun run = testing::run_rastrace(
-      "adjacency " + path + " --order careful --edges --size 256 --no-time --format json", /*with_stderr=*/false);
-  ASSERT_EQ(run.status, 0);
+      {"adjacency", path, "--order", "careful", "--edges", "--size", "256", "--no-time", "--format", "json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(render_table(result.table, TableFormat::Json), run.out);
 
   const nlohmann::json rows = nlohmann::json::parse(run.out);

@@ -116,11 +116,13 @@ TEST(TextureExperiment, ASceneWithoutTexturesIsAClearError) {
 // One metadata builder: a texsweep or report trace states the same settings, cull, lod and
 // lighting included, as `rastrace render --trace` of the same frame.
 TEST(TextureExperiment, TracesCarryTheSameMetadataAsRenderTraces) {
-  const std::string dir = temporary_dir("metadata");
+  const testing::TempDir temp;
+  const std::string dir = temp.file("metadata");
+  std::filesystem::create_directories(dir);
   const testing::CommandRun rendered =
-      testing::run_rastrace("render builtin:grid --order strip --cull back --raster tiled8 -o " + dir +
-                            "/frame.png --trace " + dir + "/render.rtrace");
-  ASSERT_EQ(rendered.status, 0) << rendered.out;
+      testing::run_rastrace({"render", "builtin:grid", "--order", "strip", "--cull", "back", "--raster", "tiled8", "-o",
+                             dir + "/frame.png", "--trace", dir + "/render.rtrace"});
+  ASSERT_EQ(rendered.exit_code, 0) << rendered.err;
 
   TextureExperiment experiment;
   experiment.render.scene = "builtin:grid";
