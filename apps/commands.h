@@ -14,6 +14,7 @@ void add_info_command(CLI::App& app);
 void add_convert_command(CLI::App& app);
 void add_reorder_command(CLI::App& app);
 void add_vcache_command(CLI::App& app);
+void add_vipm_command(CLI::App& app);
 void add_adjacency_command(CLI::App& app);
 void add_render_command(CLI::App& app);
 void add_compare_command(CLI::App& app);

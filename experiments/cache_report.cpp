@@ -116,14 +116,30 @@ void write_miss_rate_plot(const std::string& path, const std::string& title, con
   write_size_plot(path, title, "miss rate", series);
 }
 
-void write_size_plot(const std::string& path, const std::string& title, const std::string& y_label, PlotSeries series) {
+std::string gnuplot_terminal(const std::string& path, int width, int height) {
   std::string extension = std::filesystem::path(path).extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (extension != ".png" && extension != ".svg")
     throw InputError("--plot " + path + ": expected a .png or .svg file name");
-  std::string script;
-  script += extension == ".png" ? "set terminal pngcairo size 1000,650 noenhanced\n"
-                                : "set terminal svg size 1000,650 noenhanced\n";
+  const std::string size = " size " + std::to_string(width) + "," + std::to_string(height) + " noenhanced\n";
+  return (extension == ".png" ? "set terminal pngcairo" : "set terminal svg") + size;
+}
+
+void run_gnuplot(const std::string& path, const std::string& script, const std::string& plot) {
+  write_via_temporary(path, [&](const std::filesystem::path& temporary) {
+    const std::string full = script + "set output '" + temporary.string() + "'\n" + plot + "\nunset output\n";
+    // gnuplot talks on stderr only, never into a table on stdout.
+    FILE* gnuplot = popen("gnuplot 1>&2", "w");
+    if (!gnuplot) throw InputError("--plot: cannot run gnuplot (install gnuplot-nox)");
+    std::fwrite(full.data(), 1, full.size(), gnuplot);
+    const int status = pclose(gnuplot);
+    if (status != 0 || !std::filesystem::exists(temporary) || std::filesystem::file_size(temporary) == 0)
+      throw InputError("--plot " + path + ": gnuplot failed (exit status " + std::to_string(status) + ")");
+  });
+}
+
+void write_size_plot(const std::string& path, const std::string& title, const std::string& y_label, PlotSeries series) {
+  std::string script = gnuplot_terminal(path, 1000, 650);
   script += "set logscale x 2\nset xlabel 'cache size'\nset ylabel '" + y_label + "'\n";
   std::set<std::uint64_t> sizes;
   for (const auto& entry : series)
@@ -149,22 +165,13 @@ void write_size_plot(const std::string& path, const std::string& title, const st
     }
     script += "EOD\n";
   }
-  write_via_temporary(path, [&](const std::filesystem::path& temporary) {
-    std::string full = "set output '" + temporary.string() + "'\nplot ";
-    index = 0;
-    for (const auto& entry : series) {
-      if (index) full += ", ";
-      full += "$s" + std::to_string(index++) + " using 1:2 with linespoints title '" + entry.first + "'";
-    }
-    full = script + full + "\nunset output\n";
-    // gnuplot talks on stderr only, never into a table on stdout.
-    FILE* gnuplot = popen("gnuplot 1>&2", "w");
-    if (!gnuplot) throw InputError("--plot: cannot run gnuplot (install gnuplot-nox)");
-    std::fwrite(full.data(), 1, full.size(), gnuplot);
-    const int status = pclose(gnuplot);
-    if (status != 0 || !std::filesystem::exists(temporary) || std::filesystem::file_size(temporary) == 0)
-      throw InputError("--plot " + path + ": gnuplot failed (exit status " + std::to_string(status) + ")");
-  });
+  std::string plot = "plot ";
+  index = 0;
+  for (const auto& entry : series) {
+    if (index) plot += ", ";
+    plot += "$s" + std::to_string(index++) + " using 1:2 with linespoints title '" + entry.first + "'";
+  }
+  run_gnuplot(path, script, plot);
 }
 
 }  // namespace rastrace

@@ -36,6 +36,11 @@ void write_miss_rate_plot(const std::string& path, const std::string& title, con
 using PlotSeries = std::map<std::string, std::vector<std::pair<std::uint64_t, double>>>;
 void write_size_plot(const std::string& path, const std::string& title, const std::string& y_label, PlotSeries series);
 
+// The "set terminal" line for a .png or .svg path (InputError naming --plot otherwise), and a
+// gnuplot run whose `script` (data blocks, settings) and `plot` commands write path atomically.
+std::string gnuplot_terminal(const std::string& path, int width, int height);
+void run_gnuplot(const std::string& path, const std::string& script, const std::string& plot);
+
 // The default source for byte caches: texels when the trace has any, then addresses, then vertices.
 SweepSource default_source(const TraceSummary& summary);
 
