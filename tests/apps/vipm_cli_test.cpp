@@ -17,13 +17,9 @@ TEST(VipmCommand, GridJsonHasLodsAndSummary) {
   const auto json = nlohmann::json::parse(result.out);
   ASSERT_TRUE(json.contains("lods"));
   ASSERT_TRUE(json.contains("summary"));
-  ASSERT_FALSE(json["lods"].empty());
-  for (const char* key : {"method", "lod", "triangles", "acmr", "degenerate", "index_bytes", "draw_calls"})
-    EXPECT_TRUE(json["lods"][0].contains(key)) << key;
-  ASSERT_EQ(json["summary"].size(), 6u);
-  for (const char* key :
-       {"method", "mean_acmr", "global_bytes", "instance_bytes", "index_writes_per_collapse", "levels"})
-    EXPECT_TRUE(json["summary"][0].contains(key)) << key;
+  // The rows' keys are checked on the experiment itself (tests/experiments/vipm_experiment_test.cpp).
+  EXPECT_FALSE(json["lods"].empty());
+  EXPECT_EQ(json["summary"].size(), 6u);
   EXPECT_EQ(json["parameters"]["cache"], "entries=16,policy=fifo");
 }
 
