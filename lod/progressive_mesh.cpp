@@ -18,6 +18,7 @@
 #include "core/rng.h"
 #include "lod/progressive_mesh_input.h"
 #include "lod/progressive_mesh_quadric.h"
+#include "lod/vanilla_numbering.h"
 
 namespace rastrace {
 namespace {
@@ -36,14 +37,6 @@ struct Candidate {
     if (binned != o.binned) return binned > o.binned;
     return kept > o.kept;
   }
-};
-
-// One collapse as found during the build, in original vertex and face ids.
-struct RawCollapse {
-  std::uint32_t kept, binned;
-  std::vector<std::uint32_t> binned_faces;
-  std::vector<std::pair<std::uint32_t, std::uint8_t>> changed;  // face, corner holding `binned`
-  double error;
 };
 
 class Builder {
@@ -66,9 +59,9 @@ class Builder {
     build_quadrics();
   }
 
-  std::vector<RawCollapse> run(std::uint32_t min_triangles) {
+  std::vector<HalfEdgeCollapse> run(std::uint32_t min_triangles) {
     for (std::uint32_t v = 0; v < positions_.size(); ++v) push_edges_of(v, /*both_directions=*/false);
-    std::vector<RawCollapse> collapses;
+    std::vector<HalfEdgeCollapse> collapses;
     while (alive_count_ > min_triangles && !queue_.empty()) {
       const Candidate c = queue_.top();
       queue_.pop();
@@ -77,13 +70,12 @@ class Builder {
         refused_[c.binned] = refused_[c.kept] = 1;
         continue;
       }
-      collapses.push_back(collapse(c.binned, c.kept, c.cost));
+      collapse(c.binned, c.kept);
+      collapses.push_back({c.binned, c.kept, c.cost});
       refresh_around(c.kept);
     }
     return collapses;
   }
-
-  const std::vector<std::uint8_t>& alive() const { return alive_; }
 
  private:
   void build_quadrics() {
@@ -229,11 +221,9 @@ class Builder {
     return glm::cross(positions_[t[1]] - a, positions_[t[2]] - a);
   }
 
-  RawCollapse collapse(std::uint32_t b, std::uint32_t k, double error) {
-    RawCollapse r{k, b, {}, {}, error};
+  void collapse(std::uint32_t b, std::uint32_t k) {
     for (const std::uint32_t f : vertex_faces_[b]) {
       if (has(f, k)) {
-        r.binned_faces.push_back(f);
         alive_[f] = 0;
         --alive_count_;
         for (const std::uint32_t w : face_[f])
@@ -242,13 +232,11 @@ class Builder {
         std::uint8_t corner = face_[f][0] == b ? 0 : face_[f][1] == b ? 1 : 2;
         face_[f][corner] = k;
         vertex_faces_[k].push_back(f);
-        r.changed.emplace_back(f, corner);
       }
     }
     vertex_faces_[b].clear();
     quadrics_[k] += quadrics_[b];
     ++stamp_[b];
-    return r;
   }
 
   const ProgressiveMeshParams& params_;
@@ -277,64 +265,10 @@ ProgressiveMesh build_progressive_mesh(const Mesh& mesh, const ProgressiveMeshPa
     throw InputError("mesh '" + mesh.name + "': --min-triangles " + std::to_string(min_triangles) +
                      " is larger than its " + std::to_string(faces) + " triangles");
 
+  // The builder finds the sequence; vanilla numbering (the binned faces and changed corners of
+  // each collapse included) is the one any valid sequence gets.
   Builder builder(mesh, params);
-  const std::vector<RawCollapse> raw = builder.run(min_triangles);
-
-  // Vanilla numbering: vertices never binned first, then binned ones in reverse collapse order.
-  ProgressiveMesh pm;
-  pm.name = mesh.name;
-  const std::uint32_t unset = 0xFFFFFFFFu;
-  std::vector<std::uint8_t> used(mesh.vertex_count(), 0), binned(mesh.vertex_count(), 0);
-  for (const std::uint32_t v : mesh.indices) used[v] = 1;
-  for (const RawCollapse& c : raw) binned[c.binned] = 1;
-  std::vector<std::uint32_t> new_vertex(mesh.vertex_count(), unset);
-  for (std::uint32_t v = 0; v < mesh.vertex_count(); ++v)
-    if (used[v] && !binned[v]) {
-      new_vertex[v] = static_cast<std::uint32_t>(pm.vertex_order.size());
-      pm.vertex_order.push_back(v);
-    }
-  for (auto c = raw.rbegin(); c != raw.rend(); ++c) {
-    new_vertex[c->binned] = static_cast<std::uint32_t>(pm.vertex_order.size());
-    pm.vertex_order.push_back(c->binned);
-  }
-  // Triangles: the survivors first, then each collapse's binned faces, the first collapse's last.
-  std::vector<std::uint32_t> new_triangle(faces, unset);
-  auto place = [&](std::uint32_t f) {
-    new_triangle[f] = static_cast<std::uint32_t>(pm.triangle_origin.size());
-    pm.triangle_origin.push_back(f);
-  };
-  for (std::uint32_t f = 0; f < faces; ++f)
-    if (builder.alive()[f]) place(f);
-  for (auto c = raw.rbegin(); c != raw.rend(); ++c) {
-    std::vector<std::uint32_t> group = c->binned_faces;
-    std::sort(group.begin(), group.end());
-    for (const std::uint32_t f : group) place(f);
-  }
-  pm.triangles.resize(faces);
-  for (std::uint32_t t = 0; t < faces; ++t)
-    for (int i = 0; i < 3; ++i)
-      pm.triangles[t][i] = new_vertex[mesh.indices[3 * std::size_t(pm.triangle_origin[t]) + i]];
-
-  pm.collapses.reserve(raw.size());
-  pm.triangle_counts.push_back(faces);
-  for (const RawCollapse& c : raw) {
-    CollapseRecord r;
-    r.kept = new_vertex[c.kept];
-    r.binned = new_vertex[c.binned];
-    r.error = c.error;
-    for (const std::uint32_t f : c.binned_faces) r.binned_triangles.push_back(new_triangle[f]);
-    std::sort(r.binned_triangles.begin(), r.binned_triangles.end());
-    std::vector<std::pair<std::uint32_t, std::uint8_t>> changed;
-    for (const auto& [f, corner] : c.changed) changed.emplace_back(new_triangle[f], corner);
-    std::sort(changed.begin(), changed.end());
-    for (const auto& [t, corner] : changed) {
-      r.changed_triangles.push_back(t);
-      r.changed_corners.push_back(3 * t + corner);
-    }
-    pm.triangle_counts.push_back(pm.triangle_counts.back() - static_cast<std::uint32_t>(r.binned_triangles.size()));
-    pm.collapses.push_back(std::move(r));
-  }
-  return pm;
+  return progressive_mesh_from_collapses(mesh, builder.run(min_triangles));
 }
 
 }  // namespace rastrace
