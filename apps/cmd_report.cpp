@@ -14,7 +14,7 @@ struct ReportCommand {
   ReportSpec spec;
   SweepFlags sweep{
       .tcache = "size=1KiB..64KiB,line=64B,assoc=full,policy=fifo/lru/opt,layout=linear/block4/block8/morton",
-      .old_flags = {}};
+      .retired = {}};
 };
 
 }  // namespace

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
-#include <map>
 #include <memory>
 
 #include "apps/commands.h"
+#include "apps/sweep_flags.h"
 #include "cache_sim/cache_spec.h"
 #include "core/error.h"
 #include "core/units.h"
@@ -19,8 +19,7 @@ void add_sweep_command(CLI::App& app) {
       app.add_subcommand("sweep", "Sweep cache sizes, lines, associativities, policies and layouts over a trace");
   struct Options {
     std::string trace, cache = "size=1KiB..64KiB", format = "md", output, plot;
-    // The flags one cache spec replaced: given, they are an error that shows the spec.
-    std::map<std::string, std::string> old_flags;
+    RetiredCacheFlags retired;
     unsigned threads = 0;
     bool keep_vertex_cache = false;
   };
@@ -33,9 +32,8 @@ void add_sweep_command(CLI::App& app) {
                    "combination, e.g. size=1KiB..64KiB,assoc=1/2/4/full,policy=fifo/lru,layout=linear/morton, "
                    "or entries=4..64,policy=fifo/lru for post-transform vertex caches")
       ->capture_default_str();
-  static const char* const kOldFlags[] = {"entries", "size",  "line", "assoc",  "policy", "layout",
-                                          "texel",   "align", "seed", "source", "stride"};
-  for (const char* flag : kOldFlags) command->add_option(std::string("--") + flag, o->old_flags[flag])->group("");
+  o->retired.add(
+      *command, {"entries", "size", "line", "assoc", "policy", "layout", "texel", "align", "seed", "source", "stride"});
   command->add_option("--threads", o->threads, "Worker threads (0: one per core)")->capture_default_str();
   command->add_option("--format", o->format, "Table format: md, csv, latex or json")->capture_default_str();
   command->add_option("-o,--output", o->output, "Write the table to this file (atomically) instead of stdout");
@@ -53,15 +51,7 @@ void add_sweep_command(CLI::App& app) {
     const TraceSummary summary = summarize_trace(o->trace);
     auto parameters = trace_parameters(o->trace, summary);
 
-    std::string given, spec_text;
-    for (const char* flag : kOldFlags) {
-      std::string value = o->old_flags.at(flag);
-      if (value.empty()) continue;
-      given += std::string(given.empty() ? "--" : ", --") + flag + " " + value;
-      std::replace(value.begin(), value.end(), ',', '/');
-      spec_text += std::string(spec_text.empty() ? "" : ",") + flag + "=" + value;
-    }
-    if (!given.empty()) throw InputError(given + ": write --cache " + spec_text);
+    o->retired.reject("--cache");
 
     const CacheSpec cache = parse_cache_spec(o->cache, "--cache");
     if (cache.kind == CacheKind::Vertex) {

@@ -64,7 +64,7 @@ struct TexsweepCommand {
   std::string cull = "back";
   SweepFlags sweep{
       .tcache = "size=1KiB..64KiB,line=64B,assoc=full,policy=fifo/lru/opt,layout=linear/block4/block8/morton",
-      .old_flags = {}};
+      .retired = {}};
   std::string format = "md";
   std::string output;
   std::string plot_dir;

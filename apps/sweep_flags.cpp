@@ -7,9 +7,23 @@
 
 namespace rastrace {
 
-namespace {
-constexpr const char* kOldFlags[] = {"size", "line", "assoc", "policy", "layout", "texel", "align", "seed"};
-}  // namespace
+void RetiredCacheFlags::add(CLI::App& command, std::initializer_list<const char*> names) {
+  for (const char* name : names) {
+    flags_.emplace_back(name, "");
+    command.add_option(std::string("--") + name, flags_.back().second)->group("");
+  }
+}
+
+void RetiredCacheFlags::reject(const std::string& option) const {
+  std::string given, spec;
+  for (auto [name, value] : flags_) {
+    if (value.empty()) continue;
+    given += (given.empty() ? "--" : ", --") + name + " " + value;
+    std::replace(value.begin(), value.end(), ',', '/');
+    spec += (spec.empty() ? "" : ",") + name + "=" + value;
+  }
+  if (!given.empty()) throw InputError(given + ": write " + option + " " + spec);
+}
 
 void add_sweep_flags(CLI::App& command, SweepFlags& flags) {
   command
@@ -17,20 +31,11 @@ void add_sweep_flags(CLI::App& command, SweepFlags& flags) {
                   "Texture caches to sweep (cache spec, README): alternatives a/b and ranges a..b expand to every "
                   "combination")
       ->capture_default_str();
-  for (const char* flag : kOldFlags) command.add_option(std::string("--") + flag, flags.old_flags[flag])->group("");
+  flags.retired.add(command, {"size", "line", "assoc", "policy", "layout", "texel", "align", "seed"});
 }
 
 SweepSpec sweep_spec_from(const SweepFlags& flags) {
-  std::string given, spec_text;
-  for (const char* flag : kOldFlags) {
-    const auto it = flags.old_flags.find(flag);
-    if (it == flags.old_flags.end() || it->second.empty()) continue;
-    std::string value = it->second;
-    given += std::string(given.empty() ? "--" : ", --") + flag + " " + value;
-    std::replace(value.begin(), value.end(), ',', '/');
-    spec_text += std::string(spec_text.empty() ? "" : ",") + flag + "=" + value;
-  }
-  if (!given.empty()) throw InputError(given + ": write --tcache " + spec_text);
+  flags.retired.reject("--tcache");
   const CacheSpec spec = parse_cache_spec(flags.tcache, "--tcache");
   if (spec.kind != CacheKind::Byte)
     throw InputError("--tcache '" + flags.tcache + "': expected a byte-cache spec (size=...), not a vertex cache");

@@ -3,8 +3,10 @@
 // --tcache size=1KiB..64KiB,assoc=full,policy=fifo/lru/opt,layout=linear/morton.
 #pragma once
 
-#include <map>
+#include <deque>
+#include <initializer_list>
 #include <string>
+#include <utility>
 
 #include <CLI/CLI.hpp>
 
@@ -12,11 +14,22 @@
 
 namespace rastrace {
 
+// The per-axis flags a cache spec replaced (--size, --line, --entries, ...): still accepted by the
+// parser, hidden from --help, and an error that shows the spec to write when given.
+class RetiredCacheFlags {
+ public:
+  void add(CLI::App& command, std::initializer_list<const char*> names);
+  // Throws InputError("--size 1KiB,4KiB, --policy lru: write OPTION size=1KiB/4KiB,policy=lru")
+  // if any was given.
+  void reject(const std::string& option) const;
+
+ private:
+  std::deque<std::pair<std::string, std::string>> flags_;  // name, value given ("" if none); stable addresses
+};
+
 struct SweepFlags {
   std::string tcache;
-  // The per-axis flags the spec replaced (--size, --line, ...): given, they are an error that
-  // shows the spec to write.
-  std::map<std::string, std::string> old_flags;
+  RetiredCacheFlags retired;
 };
 
 void add_sweep_flags(CLI::App& command, SweepFlags& flags);
