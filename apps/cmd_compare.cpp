@@ -6,7 +6,7 @@
 // edge (the drivers' fill rules legitimately differ), centres within 1/256 pixel of one (softpipe
 // does not snap vertices to the 1/256 grid as rastrace and llvmpipe do) and the others.
 //
-// --lod auto (the default) draws rastrace's image with the LOD formula the driver implements:
+// --lod-formula auto (the default) draws rastrace's image with the LOD formula the driver implements:
 // softpipe takes the largest derivative component (GL eq. 8.7), llvmpipe the vector lengths
 // (eq. 8.6, rastrace's default). Both are conformant; they differ by up to half a mip level.
 #include <cmath>
@@ -107,7 +107,7 @@ void add_compare_command(CLI::App& app) {
   command->add_option("--driver", options->driver, "OSMesa driver: softpipe or llvmpipe")->capture_default_str();
   command->add_option("-o,--output", options->diff, "Difference image (|a - b| x 16, coverage differences magenta)");
   command->add_option("--save", options->save, "Also write PREFIX-rastrace.png and PREFIX-<driver>.png");
-  command->add_option("--lod", options->flags.lod, "auto (the driver's formula), lengths or max_component")
+  command->add_option("--lod-formula", options->flags.lod, "auto (the driver's formula), lengths or max_component")
       ->capture_default_str();
   command->add_option("--format", options->format, "md, csv, latex or json")->capture_default_str();
   command->add_flag("--json", options->json, "Same as --format json");

@@ -1,8 +1,10 @@
 // `rastrace render SCENE -o image.png [--trace out.rtrace] [--vcache entries=16,policy=fifo]
-//  [--tcache size=16KiB,line=64B,assoc=4,policy=lru,layout=block4] [--raster tiled8] [--filter trilinear] [--json]`:
-// draws a scene with the software pipeline, simulating a post-transform vertex cache and a texture
-// cache live (and writing the trace when asked), and prints what the frame cost: triangles drawn,
-// vertices shaded, ACMR, fragments, texel accesses, texture misses and bytes per fragment.
+//  [--tcache size=16KiB,line=64B,assoc=4,policy=lru,layout=block4] [--raster tiled8] [--filter trilinear]
+//  [--vipm METHOD --lod N] [--json]`:
+// draws a scene with the software pipeline (in a triangle ordering, or at a VIPM level of detail),
+// simulating a post-transform vertex cache and a texture cache live (and writing the trace when
+// asked), and prints what the frame cost: triangles drawn, vertices shaded, ACMR, fragments,
+// texel accesses, texture misses and bytes per fragment.
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -14,6 +16,7 @@
 #include "core/error.h"
 #include "core/table.h"
 #include "core/units.h"
+#include "experiments/vipm_render.h"
 #include "pipeline/scene_order.h"
 #include "traces/tee_sink.h"
 #include "traces/trace_writer.h"
@@ -30,6 +33,8 @@ struct RenderCommand {
   std::string vcache = "entries=16,policy=fifo";
   std::string tcache = "size=16KiB,line=64B,assoc=4,policy=lru,layout=block4";
   std::string old_layout;  // --layout, replaced by the texture cache's layout key
+  std::string vipm;        // a VIPM method: draw the LoD `lod` instead of an ordering
+  std::string lod;         // collapses done, with --vipm
   std::string format = "md";
   bool json = false;
 };
@@ -45,11 +50,28 @@ void run_render(const RenderCommand& command) {
                      "--tcache size=16KiB,line=64B,assoc=4,policy=lru,layout=" + command.old_layout);
   const TextureCacheSpec tcache = parse_tcache_spec(command.tcache);
 
-  const Scene scene = load_render_scene(command.flags);
-  ReorderParams order_params;
-  order_params.cache_size = command.flags.order_cache;
-  const OrderedDraws ordered = order_scene(scene, command.flags.order, order_params);
-  options.object_draws = ordered.draws;
+  if (command.vipm.empty() && !command.lod.empty())
+    throw InputError("--lod '" + command.lod.substr(0, 32) + "': the level of detail needs --vipm METHOD" +
+                     " (the texture LOD formula is --lod-formula)");
+  std::optional<VipmScene> vipm;
+  OrderedDraws ordered;
+  if (!command.vipm.empty()) {
+    if (command.flags.order != "original")
+      throw InputError("--order " + command.flags.order + " with --vipm: a VIPM representation has its own order");
+    VipmSceneSpec spec;
+    spec.method = command.vipm;
+    spec.lod = parse_vipm_lod(command.lod.empty() ? "0" : command.lod);
+    vipm.emplace(build_vipm_scene(load_render_scene(command.flags), spec));
+    options.object_draws = vipm->draws;
+    options.draw_objects = vipm->draw_objects;
+  }
+  const Scene scene = vipm ? vipm->scene : load_render_scene(command.flags);
+  if (!vipm) {
+    ReorderParams order_params;
+    order_params.cache_size = command.flags.order_cache;
+    ordered = order_scene(scene, command.flags.order, order_params);
+    options.object_draws = ordered.draws;
+  }
   const TextureLevels levels = texture_levels(scene);
 
   CacheBankConfig bank_config;
@@ -60,7 +82,12 @@ void run_render(const RenderCommand& command) {
   std::vector<EventSink*> sinks = {&bank};
   std::optional<TraceWriter> writer;
   if (!command.trace.empty()) {
-    writer.emplace(command.trace, render_trace_metadata(command.flags, scene, levels));
+    TraceMetadata metadata = render_trace_metadata(command.flags, scene, levels);
+    if (vipm) {
+      metadata.ordering = "vipm:" + command.vipm;
+      metadata.extra["vipm_lod"] = describe_vipm_lods(vipm->parts);
+    }
+    writer.emplace(command.trace, std::move(metadata));
     sinks.push_back(&*writer);
   }
   TeeSink tee(sinks);
@@ -77,15 +104,25 @@ void run_render(const RenderCommand& command) {
 
   Table table;
   table.title = "Frame: " + scene.name;
-  table.parameters = {
-      {"scene", command.flags.scene},     {"size", std::to_string(scene.width) + "x" + std::to_string(scene.height)},
-      {"order", command.flags.order},     {"vcache", command.vcache},
-      {"tcache", describe(tcache.cache)}, {"layout", layout_name(tcache.layout)},
-      {"raster", command.flags.raster},   {"filter", command.flags.filter},
-      {"wrap", command.flags.wrap},       {"lod", command.flags.lod},
-      {"cull", command.flags.cull},       {"image", command.output}};
+  table.parameters = {{"scene", command.flags.scene},
+                      {"size", std::to_string(scene.width) + "x" + std::to_string(scene.height)},
+                      {"order", vipm ? "vipm:" + command.vipm : command.flags.order},
+                      {"vcache", command.vcache},
+                      {"tcache", describe(tcache.cache)},
+                      {"layout", layout_name(tcache.layout)},
+                      {"raster", command.flags.raster},
+                      {"filter", command.flags.filter},
+                      {"wrap", command.flags.wrap},
+                      {"lod_formula", command.flags.lod},
+                      {"cull", command.flags.cull},
+                      {"image", command.output}};
+  if (vipm) {
+    table.parameters.emplace_back("vipm", command.vipm);
+    table.parameters.emplace_back("vipm_lod", describe_vipm_lods(vipm->parts));
+  }
   if (!command.trace.empty()) table.parameters.emplace_back("trace", command.trace);
   table.columns = {{"triangles", "triangles drawn", 0},
+                   {"degenerate", "degenerate", 0},
                    {"culled", "culled", 0},
                    {"vertices_shaded", "vertices shaded", 0},
                    {"acmr", "ACMR", 3},
@@ -96,8 +133,8 @@ void run_render(const RenderCommand& command) {
                    {"texture_miss_rate", "miss rate", 4},
                    {"texture_bytes", "bytes fetched", 0},
                    {"bytes_per_fragment", "bytes/fragment", 3}};
-  table.add_row({p.triangles, p.culled, p.vertices_shaded, p.acmr(), r.fragments, r.fragments_passed, r.texel_reads,
-                 t.misses, t.miss_rate(), t.bytes_fetched,
+  table.add_row({p.triangles, p.degenerate, p.culled, p.vertices_shaded, p.acmr(), r.fragments, r.fragments_passed,
+                 r.texel_reads, t.misses, t.miss_rate(), t.bytes_fetched,
                  r.fragments_passed ? double(t.bytes_fetched) / double(r.fragments_passed) : 0.0});
   std::cout << render_table(table, format);
 }
@@ -117,8 +154,13 @@ void add_render_command(CLI::App& app) {
   command->add_option("--tcache", options->tcache, "Texture cache and layout (cache spec, README)")
       ->capture_default_str();
   command->add_option("--layout", options->old_layout)->group("");  // the old spelling: an error naming the new
-  command->add_option("--lod", options->flags.lod, "LOD scale factor: lengths (GL eq. 8.6) or max_component (8.7)")
+  command
+      ->add_option("--lod-formula", options->flags.lod,
+                   "Texture LOD scale factor: lengths (GL eq. 8.6) or max_component (8.7)")
       ->capture_default_str();
+  command->add_option("--vipm", options->vipm,
+                      "Draw a VIPM level of detail: vanilla, skipstrips, skiplists, mixed, mixedstrips or sliding");
+  command->add_option("--lod", options->lod, "With --vipm: the level of detail, as collapses done (0: full detail)");
   command->add_option("--format", options->format, "md, csv, latex or json")->capture_default_str();
   command->add_flag("--json", options->json, "Same as --format json");
   command->footer(
@@ -127,7 +169,8 @@ void add_render_command(CLI::App& app) {
       "  rastrace render builtin:grid -o grid.png --raster tiled8 --tcache size=8KiB,line=32B,assoc=2,policy=fifo,"
       "layout=morton --json\n"
       "  rastrace render builtin:bunny -o bunny.png --order tipsy --vcache entries=16,policy=fifo --trace "
-      "bunny.rtrace");
+      "bunny.rtrace\n"
+      "  rastrace render builtin:bunny -o bunny-lod.png --vipm sliding --lod 30000 --trace bunny-lod.rtrace");
   command->callback([options] { run_render(*options); });
 }
 

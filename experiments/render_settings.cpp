@@ -33,7 +33,7 @@ RenderOptions render_options_from(const SceneRenderFlags& flags) {
   else if (flags.lod == "max_component")
     sampler.lod = LodFormula::MaxComponent;
   else
-    throw InputError("--lod '" + flags.lod + "': expected lengths or max_component");
+    throw InputError("--lod-formula '" + flags.lod + "': expected lengths or max_component");
   options.pipeline.raster.traversal = parse_traversal(flags.raster);
   options.pipeline.cull = parse_cull_mode(flags.cull);
   options.pipeline.lighting.enabled = flags.lighting;

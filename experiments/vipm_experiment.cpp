@@ -32,12 +32,13 @@ constexpr MethodName kMethods[] = {
     {"sliding", "sliding-window", "Sliding Window"},
 };
 
-const MethodName& method_by_cli(const std::string& name) {
+const MethodName& method_by_cli(const std::string& name, const char* flag = "--methods",
+                                const char* expected = "all or a comma-separated list of") {
   for (const MethodName& m : kMethods)
     if (name == m.cli) return m;
   std::string accepted;
   for (const std::string& n : vipm_method_names()) accepted += (accepted.empty() ? "" : ", ") + n;
-  throw InputError("--methods '" + name + "': expected all or a comma-separated list of " + accepted);
+  throw InputError(std::string(flag) + " '" + name + "': expected " + expected + " " + accepted);
 }
 
 std::vector<std::string> parse_methods(const std::string& text) {
@@ -83,6 +84,10 @@ const std::vector<std::string>& vipm_method_names() {
 }
 
 std::string forsyth_column(const std::string& method) { return method_by_cli(method).column; }
+
+std::string vipm_representation_of(const std::string& method, const char* flag) {
+  return method_by_cli(method, flag, "one of").representation;
+}
 
 VipmExperiment run_vipm_experiment(const Mesh& mesh, const std::string& mesh_name, const VipmExperimentSpec& spec) {
   VipmExperiment out;

@@ -39,6 +39,9 @@ struct VipmExperiment {
 const std::vector<std::string>& vipm_method_names();
 // Forsyth's column for a method: Vanilla, Skip Strips, Mixed-Mode or Sliding Window.
 std::string forsyth_column(const std::string& method);
+// The representation's method() name (lod/vipm_representation.h) for a command-line name;
+// throws InputError naming `flag` and the accepted names.
+std::string vipm_representation_of(const std::string& method, const char* flag);
 
 // Throws InputError for an unknown method (naming the accepted ones), a lod step of 0, or a mesh
 // the progressive-mesh builder refuses.

@@ -36,4 +36,11 @@ struct VipmMethods {
 // `vertices`: the vertex buffer in pm's numbering (reordered_mesh's result).
 VipmMethods build_vipm_methods(const ProgressiveMesh& pm, const Mesh& vertices, const VipmMethodsParams& params = {});
 
+// One representation by its method() name (vipm_representation.h), on pm as given: sliding window
+// is built on pm's own order, so relax it first for Forsyth's variant. Throws std::logic_error
+// for an unknown name.
+std::unique_ptr<VipmRepresentation> build_vipm_representation(const std::string& method, const ProgressiveMesh& pm,
+                                                              const Mesh& vertices,
+                                                              const VipmMethodsParams& params = {});
+
 }  // namespace rastrace

@@ -24,18 +24,28 @@ RenderResult render_scene(const Scene& scene, const RenderOptions& options, Even
   Pipeline pipeline(result.framebuffer, options.pipeline, sink);
   const CameraMatrices camera = camera_matrices(scene);
   pipeline.set_camera(camera.view, camera.projection);
-  if (!options.object_draws.empty() && options.object_draws.size() != scene.objects.size())
-    throw InputError(scene.name + ": " + std::to_string(options.object_draws.size()) + " draw calls for " +
+  const std::span<const DrawCall> calls = options.object_draws;
+  const std::span<const std::uint32_t> objects = options.draw_objects;
+  if (!objects.empty() && objects.size() != calls.size())
+    throw InputError(scene.name + ": " + std::to_string(objects.size()) + " draw objects for " +
+                     std::to_string(calls.size()) + " draw calls");
+  if (objects.empty() && !calls.empty() && calls.size() != scene.objects.size())
+    throw InputError(scene.name + ": " + std::to_string(calls.size()) + " draw calls for " +
                      std::to_string(scene.objects.size()) + " objects");
-  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+  const std::size_t draws = calls.empty() ? scene.objects.size() : calls.size();
+  for (std::size_t d = 0; d < draws; ++d) {
+    const std::size_t o = objects.empty() ? d : objects[d];
+    if (o >= scene.objects.size())
+      throw InputError(scene.name + ": draw " + std::to_string(d) + " is of object " + std::to_string(o) + ", of " +
+                       std::to_string(scene.objects.size()));
     const SceneObject& object = scene.objects[o];
     DrawCall call;
-    if (options.object_draws.empty()) {
+    if (calls.empty()) {
       call.indices = object.mesh.indices;
       call.type = PrimitiveType::TriangleList;
       call.primitive_materials = object.mesh.face_material;
     } else {
-      call = options.object_draws[o];
+      call = calls[d];
     }
     pipeline.draw(object.mesh, object.transform, call, scene.textures);
   }

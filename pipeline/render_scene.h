@@ -31,6 +31,9 @@ struct RenderOptions {
   // Optional: one draw call per scene object (e.g. a reordered index stream); empty draws each
   // object's own triangle list. The spans must outlive the call.
   std::span<const DrawCall> object_draws;
+  // Optional, with object_draws: the object each draw is of (any number of draws per object, in
+  // this order); empty means draw o is of object o.
+  std::span<const std::uint32_t> draw_objects;
 };
 
 struct RenderResult {

@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
+
 #include "tests/support/run_rastrace.h"
+#include "tests/support/temp_dir.h"
 
 namespace rastrace {
 namespace {
@@ -36,6 +39,45 @@ TEST(VipmCommand, CacheMustBeOneVertexCache) {
     EXPECT_EQ(result.exit_code, 1) << spec;
     EXPECT_THAT(result.err, HasSubstr("--cache")) << spec;
   }
+}
+
+// The texel trace of a VIPM frame is swept like any other: replaying it under the render's texture
+// cache gives the render's own live counts.
+TEST(RenderVipm, TraceOfALodReplaysToTheLiveTextureMisses) {
+  const testing::TempDir dir;
+  const std::string trace = dir.file("grid-lod.rtrace");
+  const char* cache = "size=8KiB,line=64B,assoc=2,policy=lru,layout=block4";
+  const auto render = run_rastrace({"render", "builtin:grid", "-o", dir.file("grid.png"), "--vipm", "mixedstrips",
+                                    "--lod", "300", "--tcache", cache, "--trace", trace, "--format", "json"});
+  ASSERT_EQ(render.exit_code, 0) << render.err;
+  const auto frame = nlohmann::json::parse(render.out);
+  const auto& row = frame.at(0);
+  EXPECT_EQ(row["vipm"], "mixedstrips");
+  EXPECT_EQ(row["order"], "vipm:mixedstrips");
+  EXPECT_THAT(row["vipm_lod"].get<std::string>(), HasSubstr("grid32x32 300/"));
+  EXPECT_EQ(row["triangles"], 1469);
+  EXPECT_GT(row["degenerate"], 0);
+
+  const auto replay = run_rastrace({"replay", trace, "--cache", cache, "--format", "json"});
+  ASSERT_EQ(replay.exit_code, 0) << replay.err;
+  const auto replayed = nlohmann::json::parse(replay.out).at(0);
+  EXPECT_EQ(replayed["misses"], row["texture_misses"]);
+  EXPECT_EQ(replayed["accesses"], row["texel_accesses"]);
+  EXPECT_EQ(replayed["ordering"], "vipm:mixedstrips");
+}
+
+TEST(RenderVipm, LodWithoutVipmOrWithAnOrderIsAnError) {
+  const testing::TempDir dir;
+  auto result = run_rastrace({"render", "builtin:grid", "-o", dir.file("a.png"), "--lod", "5"});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_THAT(result.err, HasSubstr("--lod '5': the level of detail needs --vipm METHOD"));
+  result = run_rastrace({"render", "builtin:grid", "-o", dir.file("a.png"), "--vipm", "vanilla", "--order", "tipsy"});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_THAT(result.err, HasSubstr("--order tipsy with --vipm"));
+  result = run_rastrace({"render", "builtin:grid", "-o", dir.file("a.png"), "--lod-formula", "max"});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_THAT(result.err, HasSubstr("--lod-formula 'max': expected lengths or max_component"));
+  EXPECT_FALSE(std::filesystem::exists(dir.file("a.png")));
 }
 
 }  // namespace
