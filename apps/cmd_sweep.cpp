@@ -1,16 +1,20 @@
 // `rastrace sweep TRACE`: every combination of cache size, line, associativity, policy and layout
-// over one trace, in parallel; a table (md/csv/latex/json) and optionally a miss-rate plot.
+// over one trace, in parallel; a table (md/csv/latex/json) and optionally a miss-rate plot; or,
+// with --shard K/N, one part of that set for `rastrace merge` (experiments/sweep_parts.h).
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "apps/commands.h"
 #include "apps/sweep_flags.h"
 #include "cache_sim/cache_spec.h"
 #include "core/error.h"
+#include "core/file_digest.h"
 #include "core/units.h"
 #include "experiments/cache_report.h"
+#include "experiments/sweep_parts.h"
 
 namespace rastrace {
 
@@ -18,7 +22,7 @@ void add_sweep_command(CLI::App& app) {
   CLI::App* command =
       app.add_subcommand("sweep", "Sweep cache sizes, lines, associativities, policies and layouts over a trace");
   struct Options {
-    std::string trace, cache = "size=1KiB..64KiB", format = "md", output, plot;
+    std::string trace, cache = "size=1KiB..64KiB", format = "md", output, plot, shard;
     RetiredCacheFlags retired;
     unsigned threads = 0;
     bool keep_vertex_cache = false;
@@ -40,43 +44,68 @@ void add_sweep_command(CLI::App& app) {
   command->add_option("--plot", o->plot, "Also draw miss rate against cache size: FILE.png or FILE.svg (gnuplot)");
   command->add_flag("--keep-vertex-cache", o->keep_vertex_cache,
                     "With a vertex cache spec (entries=...): keep the cache across draws");
+  command->add_option("--shard", o->shard,
+                      "K/N: compute only the K-th of N disjoint parts of the configurations and write it as a "
+                      "part (JSON) for `rastrace merge`");
   command->footer(
       "Examples:\n"
       "  rastrace sweep frame.rtrace --cache size=1KiB..64KiB,assoc=1/2/4/full,policy=fifo/lru/opt,"
       "layout=linear/block4/block8/morton --plot missrate.png\n"
       "  rastrace sweep old.din --cache size=4KiB..32KiB,line=32B/64B,assoc=1/2/full --format csv\n"
-      "  rastrace sweep frame.rtrace --cache entries=4..64,policy=fifo/lru --format json");
+      "  rastrace sweep frame.rtrace --cache entries=4..64,policy=fifo/lru --format json\n"
+      "  rastrace sweep frame.rtrace --cache size=1KiB..1MiB,policy=fifo/lru --shard 2/4 -o part-2.json");
   command->callback([o] {
     const TableFormat table_format = parse_table_format(o->format);
+    std::optional<SweepShard> shard;
+    if (!o->shard.empty()) {
+      shard = parse_sweep_shard(o->shard);
+      if (!o->plot.empty()) throw InputError("--plot with --shard: a part has no plot; draw it from the merge");
+    }
     const TraceSummary summary = summarize_trace(o->trace);
     auto parameters = trace_parameters(o->trace, summary);
 
     o->retired.reject("--cache");
 
     const CacheSpec cache = parse_cache_spec(o->cache, "--cache");
+    Table table;
+    SweepPart part;
     if (cache.kind == CacheKind::Vertex) {
-      const auto rows = run_vertex_sweep(o->trace, cache.vertex_policies, cache.entries, !o->keep_vertex_cache);
+      const auto rows = run_vertex_sweep(o->trace, cache.vertex_policies, cache.entries, !o->keep_vertex_cache,
+                                         shard.value_or(SweepShard{}));
       parameters.emplace_back("vertex_cache_per_draw", o->keep_vertex_cache ? "kept" : "flushed");
-      const Table table = vertex_cache_table("Post-transform vertex cache sweep", parameters, rows);
+      table = vertex_cache_table("Post-transform vertex cache sweep", parameters, rows);
+      part.configurations = cache.vertex_policies.size() * cache.entries.size();
+      for (const VertexSweepRow& row : rows) part.row_configurations.push_back(row.configuration);
+    } else {
+      SweepSpec spec = sweep_spec(cache, default_source(summary));
+      spec.shard = shard.value_or(SweepShard{});
+      const SweepResult result = run_sweep(o->trace, spec, o->threads);
+      for (const std::string& skipped : result.skipped) std::cerr << "rastrace sweep: skipped " << skipped << "\n";
+      if (spec.source == SweepSource::Texel) {
+        parameters.emplace_back("texel_bytes", spec.layouts.front().texel_bytes);
+        parameters.emplace_back("level_alignment_bytes", spec.layouts.front().alignment);
+      } else if (spec.source == SweepSource::VertexBuffer) {
+        parameters.emplace_back("vertex_stride_bytes", spec.stride);
+      }
+      parameters.emplace_back("random_seed", spec.seed);
+      const std::string title = "Cache sweep over " + std::string(to_string(spec.source)) + " accesses";
+      table = byte_cache_table(title, parameters, result.rows, to_string(spec.source));
+      part.configurations = result.configurations;
+      part.skipped = result.skipped;
+      for (const SweepRow& row : result.rows) part.row_configurations.push_back(row.configuration);
+      if (!o->plot.empty())
+        write_miss_rate_plot(o->plot, title + ": " + std::filesystem::path(o->trace).filename().string(), result.rows);
+    }
+    if (!shard) {
       write_output(o->output, render_table(table, table_format));
       return;
     }
-    const SweepSpec spec = sweep_spec(cache, default_source(summary));
-
-    const SweepResult result = run_sweep(o->trace, spec, o->threads);
-    for (const std::string& skipped : result.skipped) std::cerr << "rastrace sweep: skipped " << skipped << "\n";
-    if (spec.source == SweepSource::Texel) {
-      parameters.emplace_back("texel_bytes", spec.layouts.front().texel_bytes);
-      parameters.emplace_back("level_alignment_bytes", spec.layouts.front().alignment);
-    } else if (spec.source == SweepSource::VertexBuffer) {
-      parameters.emplace_back("vertex_stride_bytes", spec.stride);
-    }
-    parameters.emplace_back("random_seed", spec.seed);
-    const std::string title = "Cache sweep over " + std::string(to_string(spec.source)) + " accesses";
-    const Table table = byte_cache_table(title, parameters, result.rows, to_string(spec.source));
-    if (!o->plot.empty())
-      write_miss_rate_plot(o->plot, title + ": " + std::filesystem::path(o->trace).filename().string(), result.rows);
-    write_output(o->output, render_table(table, table_format));
+    part.version = RASTRACE_VERSION;
+    part.trace_digest = file_digest(o->trace);
+    part.configuration = "cache=" + o->cache + (o->keep_vertex_cache ? " keep-vertex-cache" : "");
+    part.shard = *shard;
+    part.table = std::move(table);
+    write_output(o->output, sweep_part_json(part));
   });
 }
 

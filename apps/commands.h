@@ -9,6 +9,7 @@ namespace rastrace {
 void add_version_command(CLI::App& app);
 void add_replay_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
+void add_merge_command(CLI::App& app);
 void add_trace_command(CLI::App& app);
 void add_info_command(CLI::App& app);
 void add_convert_command(CLI::App& app);

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   rastrace::add_version_command(app);
   rastrace::add_replay_command(app);
   rastrace::add_sweep_command(app);
+  rastrace::add_merge_command(app);
   rastrace::add_trace_command(app);
   rastrace::add_info_command(app);
   rastrace::add_convert_command(app);

@@ -26,6 +26,23 @@ const char* to_string(SweepSource source) { return enum_to_string(source, kSourc
 
 SweepSource parse_sweep_source(const std::string& text) { return parse_enum(text, kSources, "source"); }
 
+SweepShard parse_sweep_shard(const std::string& text) {
+  SweepShard shard;
+  const std::size_t slash = text.find('/');
+  const auto number = [](const std::string& digits, std::uint32_t& out) {
+    if (digits.empty() || digits.size() > 5 || digits.find_first_not_of("0123456789") != std::string::npos)
+      return false;
+    out = static_cast<std::uint32_t>(std::stoul(digits));
+    return true;
+  };
+  if (slash == std::string::npos || !number(text.substr(0, slash), shard.index) ||
+      !number(text.substr(slash + 1), shard.count) || shard.index < 1 || shard.count > 65536 ||
+      shard.index > shard.count)
+    throw InputError("--shard '" + text.substr(0, 40) + (text.size() > 40 ? "...'" : "'") +
+                     ": expected K/N with 1 <= K <= N <= 65536, e.g. 3/8");
+  return shard;
+}
+
 namespace {
 
 struct Job {
@@ -58,6 +75,7 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
   }
 
   SweepResult result;
+  bool any_valid = false;
   const std::vector<LayoutSpec> layouts =
       spec.source == SweepSource::Texel ? spec.layouts : std::vector<LayoutSpec>{LayoutSpec{}};
   std::vector<Job> groups;
@@ -66,14 +84,18 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
       for (const std::uint32_t line : spec.lines)
         for (const std::uint32_t assoc : spec.assocs)
           for (const std::uint64_t size : spec.sizes) {
+            const std::size_t configuration = result.configurations++;
             const CacheConfig config{size, line, assoc, policy, spec.seed};
             try {
               validate(config);
+              any_valid = true;
             } catch (const InputError& e) {
-              result.skipped.push_back(e.what());
+              if (spec.shard.owns(configuration)) result.skipped.push_back(e.what());
               continue;
             }
+            if (!spec.shard.owns(configuration)) continue;
             SweepRow row;
+            row.configuration = configuration;
             row.cache = config;
             row.layout = spec.source == SweepSource::Texel          ? layout_name(layouts[l])
                          : spec.source == SweepSource::VertexBuffer ? "stride" + std::to_string(spec.stride)
@@ -89,7 +111,8 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
             found->rows.push_back(result.rows.size());
             result.rows.push_back(row);
           }
-  if (result.rows.empty()) throw InputError("sweep: no valid cache configuration among the combinations given");
+  if (!any_valid) throw InputError("sweep: no valid cache configuration among the combinations given");
+  if (result.rows.empty()) return result;
 
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   // Split big groups so every core has work; the split costs one more pass over the trace each.
@@ -153,17 +176,28 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
 
 std::vector<VertexSweepRow> run_vertex_sweep(const std::string& trace_path,
                                              const std::vector<VertexCachePolicy>& policies,
-                                             const std::vector<unsigned>& entries, bool flush_per_draw) {
+                                             const std::vector<unsigned>& entries, bool flush_per_draw,
+                                             const SweepShard& shard) {
   CacheBankConfig bank;
   bank.flush_vertex_cache_per_draw = flush_per_draw;
+  std::vector<std::size_t> configurations;
+  std::size_t configuration = 0;
   for (const VertexCachePolicy policy : policies)
-    for (const unsigned k : entries) bank.vertex.push_back({policy, k});
+    for (const unsigned k : entries) {
+      if (shard.owns(configuration)) {
+        bank.vertex.push_back({policy, k});
+        configurations.push_back(configuration);
+      }
+      ++configuration;
+    }
+  std::vector<VertexSweepRow> rows;
+  if (bank.vertex.empty()) return rows;
   LiveBankSink sink(bank, {});
   ReplayKinds kinds;
   kinds.texels = kinds.addresses = false;
   replay_file(trace_path, sink, kinds);
-  std::vector<VertexSweepRow> rows;
-  for (std::size_t i = 0; i < bank.vertex.size(); ++i) rows.push_back({bank.vertex[i], sink.vertex_stats()[i]});
+  for (std::size_t i = 0; i < bank.vertex.size(); ++i)
+    rows.push_back({bank.vertex[i], sink.vertex_stats()[i], configurations[i]});
   return rows;
 }
 

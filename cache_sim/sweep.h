@@ -22,6 +22,17 @@ const char* to_string(SweepSource source);
 // "texel", "vertex", "address"; throws InputError otherwise.
 SweepSource parse_sweep_source(const std::string& text);
 
+// The K-th of N disjoint parts of a sweep's configuration set (`sweep --shard K/N`): configuration
+// i of the full set (in the order of the rows, impossible combinations counted) belongs to part
+// i % N + 1, so every part gets sizes from the whole range and about the same work.
+struct SweepShard {
+  std::uint32_t index = 1;  // 1 .. count
+  std::uint32_t count = 1;
+  bool owns(std::size_t configuration) const { return configuration % count == index - 1; }
+};
+// "K/N" with 1 <= K <= N <= 65536; throws InputError naming --shard otherwise.
+SweepShard parse_sweep_shard(const std::string& text);
+
 struct SweepSpec {
   SweepSource source = SweepSource::Texel;
   std::vector<std::uint64_t> sizes{16 * 1024};
@@ -32,29 +43,35 @@ struct SweepSpec {
   std::uint32_t stride = 32;                      // vertex source only
   std::uint64_t seed = 1;
   bool three_c = true;
+  SweepShard shard;
 };
 
 struct SweepRow {
   CacheConfig cache;
   std::string layout;  // layout name, "stride32" for vertex buffers, "-" for addresses
   CacheStats stats;
+  std::size_t configuration = 0;  // index in the full configuration set (see SweepShard)
 };
 
 struct SweepResult {
-  std::vector<SweepRow> rows;        // sorted by layout, policy, line, assoc, size
-  std::vector<std::string> skipped;  // impossible combinations, described
+  std::vector<SweepRow> rows;        // sorted by layout, policy, line, assoc, size (this shard's)
+  std::vector<std::string> skipped;  // impossible combinations, described (this shard's)
+  std::size_t configurations = 0;    // in the full set, impossible ones included
 };
 
-// threads = 0: one per core. progress: a bar on stderr when it is a terminal.
+// threads = 0: one per core. progress: a bar on stderr when it is a terminal. Throws InputError
+// when no combination of the whole set is valid; a shard with no valid one returns no rows.
 SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsigned threads = 0, bool progress = true);
 
 struct VertexSweepRow {
   VertexCacheSpec cache;
   VertexStreamStats stats;
+  std::size_t configuration = 0;  // policy-major index in policies x entries
 };
 // Post-transform vertex caches: every policy x entry count in one pass over the vertex fetches.
 std::vector<VertexSweepRow> run_vertex_sweep(const std::string& trace_path,
                                              const std::vector<VertexCachePolicy>& policies,
-                                             const std::vector<unsigned>& entries, bool flush_per_draw = true);
+                                             const std::vector<unsigned>& entries, bool flush_per_draw = true,
+                                             const SweepShard& shard = {});
 
 }  // namespace rastrace

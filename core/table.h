@@ -29,6 +29,8 @@ struct TableCell {
   TableCell(float number) : value(static_cast<double>(number)) {}
   template <typename Integer>
   requires std::is_integral_v<Integer> TableCell(Integer number) : value(static_cast<std::int64_t>(number)) {}
+
+  bool operator==(const TableCell&) const = default;
 };
 
 struct TableColumn {

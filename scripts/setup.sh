@@ -24,6 +24,7 @@ packages=(
   gnuplot-nox             # plots
   libcgal-demo            # real meshes (data.tar.gz)
   assimp-testmodels       # textured models
+  slurm-wlm munge         # the sharded-sweep test runs a real single-node Slurm
 )
 
 missing=()
