@@ -1,6 +1,8 @@
-// `rastrace reorder MESH --algo NAME [--cache 16] [--policy fifo|lru] [--seed N] -o OUT.off|ply|obj`:
-// writes the mesh with its faces in the algorithm's order. Vertices (positions, normals, UVs and
-// their order) are untouched; faces keep their winding and material. Only faces are written: an
+// `rastrace reorder MESH --algo NAME [--cache 16] [--policy fifo|lru] [--seed N] [--vertices keep|first-use]
+// -o OUT.off|ply|obj`: writes the mesh with its faces in the algorithm's order. Faces keep their winding and
+// material. Vertices keep their order, or with --vertices first-use are renumbered in the order the
+// reordered faces first use them (meshopt_optimizeVertexFetch's order; reorder/vertex_order.h), every
+// attribute moved with its vertex. Only faces are written: an
 // ordering's extra degenerate triangles (Castano's prefetch row) and strip encodings do not
 // survive in a mesh file. Prints one line: the faces written and their ACMR on the given cache.
 #include <iostream>
@@ -8,7 +10,10 @@
 
 #include "apps/commands.h"
 #include "cache_sim/vertex_cache.h"
+#include "cache_sim/vertex_fetch.h"
+#include "core/error.h"
 #include "reorder/ordering.h"
+#include "reorder/vertex_order.h"
 #include "scenes/mesh_io.h"
 #include "scenes/mesh_spec.h"
 
@@ -23,6 +28,7 @@ struct ReorderOptions {
   std::string policy = "fifo";
   std::uint64_t seed = 1;
   double time_budget = 60.0;
+  std::string vertices = "keep";
   std::string output;
 };
 
@@ -34,6 +40,8 @@ void run_reorder(const ReorderOptions& options) {
   params.seed = options.seed;
   params.time_budget_seconds = options.time_budget;
   VertexCache check(params.policy, params.cache_size);  // rejects a cache of 0 before any work
+  if (options.vertices != "keep" && options.vertices != "first-use")
+    throw InputError("--vertices '" + options.vertices + "': expected keep or first-use");
   Mesh mesh = load_mesh_spec(options.mesh);
   const Ordering ordering = algorithm.run(mesh, params);
 
@@ -44,6 +52,7 @@ void run_reorder(const ReorderOptions& options) {
     mesh.face_material = std::move(materials);
   }
   mesh.grid.reset();  // the faces are no longer in make_grid's order
+  if (options.vertices == "first-use") remap_vertices(mesh, first_use_vertex_remap(mesh.indices, mesh.vertex_count()));
   save_mesh(mesh, options.output);
 
   const VertexStreamStats before =
@@ -53,7 +62,10 @@ void run_reorder(const ReorderOptions& options) {
   std::cout << options.output << ": " << mesh.face_count() << " faces in " << algorithm.name << " order, ACMR "
             << written.acmr() << " on " << to_string(params.policy) << " " << params.cache_size;
   if (written.misses != before.misses) std::cout << " (" << before.acmr() << " as the algorithm's own index stream)";
-  std::cout << "\n";
+  const VertexFetchStats fetch =
+      simulate_vertex_fetch(mesh.indices, PrimitiveType::TriangleList, kNoRestart, 32, meshopt_fetch_cache());
+  std::cout << "; vertex fetch " << fetch.bytes_fetched << " bytes, overfetch " << fetch.overfetch()
+            << " (32-byte vertices, meshopt's model)\n";
 }
 
 }  // namespace
@@ -68,10 +80,15 @@ void add_reorder_command(CLI::App& app) {
   command->add_option("--seed", options->seed, "Seed of the randomized orderings")->capture_default_str();
   command->add_option("--time-budget", options->time_budget, "Seconds for iterative orderings (local)")
       ->capture_default_str();
+  command
+      ->add_option("--vertices", options->vertices,
+                   "keep (the file's vertex order) or first-use (vertices in the order the faces first use them)")
+      ->capture_default_str();
   command->add_option("-o,--output", options->output, "Output mesh (.off, .ply or .obj)")->required();
   command->footer(
       "Examples:\n"
       "  rastrace reorder data/meshes/bunny00.off --algo tipsy --cache 16 -o bunny_tipsy.ply\n"
+      "  rastrace reorder data/meshes/bunny00.off --algo tipsy --vertices first-use -o bunny_tipsy_fetch.ply\n"
       "  rastrace reorder grid:64x64 --algo grid --cache 24 -o grid64.obj");
   command->callback([options] { run_reorder(*options); });
 }

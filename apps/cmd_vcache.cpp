@@ -1,6 +1,6 @@
 // `rastrace vcache MESH --algo all|a,b,c --cache entries=8/12/16/20/24/32,policy=fifo/lru [--target K]
-//  --format md|csv|latex|json [--no-time] [--accounting misses|evictions]`: the post-transform vertex cache under every
-//  ordering.
+//  --format md|csv|latex|json [--no-time] [--accounting misses|evictions] [--vertex-bytes 32] [--fetch meshopt|SPEC]`:
+//  the post-transform vertex cache and the vertex-buffer fetch under every ordering.
 // One row per algorithm, policy and cache size: ACMR, ATVR, misses, indices per triangle, Hoppe's
 // bandwidth (ACMR * 32 + indices per triangle * 2 bytes per triangle) and the ordering's run time.
 // An algorithm orders for the simulated cache unless --target fixes the size it orders for.
@@ -10,6 +10,7 @@
 
 #include "apps/commands.h"
 #include "cache_sim/cache_spec.h"
+#include "cache_sim/vertex_fetch.h"
 #include "core/error.h"
 #include "experiments/vcache_table.h"
 #include "scenes/mesh_spec.h"
@@ -29,6 +30,8 @@ struct VcacheOptions {
   std::string format = "md";
   bool no_time = false;
   std::string accounting = "misses";
+  std::uint32_t vertex_bytes = 32;
+  std::string fetch = "meshopt";
 };
 
 void run_vcache(const VcacheOptions& options) {
@@ -54,6 +57,9 @@ void run_vcache(const VcacheOptions& options) {
   if (options.accounting != "misses" && options.accounting != "evictions")
     throw InputError("--accounting '" + options.accounting + "': expected misses or evictions");
   spec.eviction_charged = options.accounting == "evictions";
+  if (options.vertex_bytes == 0) throw InputError("--vertex-bytes 0: expected at least 1 byte per vertex");
+  spec.vertex_bytes = options.vertex_bytes;
+  spec.fetch_cache = parse_fetch_cache(options.fetch, "--fetch");
   const Mesh mesh = load_mesh_spec(options.mesh);
   std::cout << render_table(vcache_table(mesh, options.mesh, spec), format);
 }
@@ -82,13 +88,21 @@ void add_vcache_command(CLI::App& app) {
                    "misses (true FIFO/LRU misses) or evictions (transforms as NVIDIA Mesh Tools charged "
                    "them, as in Castano's grid tables; FIFO only)")
       ->capture_default_str();
+  command->add_option("--vertex-bytes", options->vertex_bytes, "Bytes per vertex: vertex fetch and bandwidth")
+      ->capture_default_str();
+  command
+      ->add_option("--fetch", options->fetch,
+                   "The vertex-buffer cache of the fetch columns: meshopt (meshopt_analyzeVertexFetch's direct-mapped "
+                   "128 KiB, 64-byte lines) or a byte-cache spec, e.g. size=16KiB,line=64B,assoc=4")
+      ->capture_default_str();
   command->add_flag("--no-time", options->no_time, "Leave out the run-time column so outputs compare byte for byte");
   command->footer(
       "Examples:\n"
       "  rastrace vcache grid:16x16 --algo scanline,grid,tipsy --cache entries=12/16/20\n"
       "  rastrace vcache data/meshes/fandisk.off --algo all --cache entries=16,policy=fifo/lru --format csv --no-time\n"
       "  rastrace vcache grid:16x16 --algo grid --target 8 --cache entries=8/16\n"
-      "  rastrace vcache grid:16x16 --algo scanline,grid --cache entries=12/16/20 --accounting evictions");
+      "  rastrace vcache grid:16x16 --algo scanline,grid --cache entries=12/16/20 --accounting evictions\n"
+      "  rastrace vcache data/meshes/bunny00.off --algo original,tipsy --vertex-bytes 48 --fetch size=32KiB,line=64B,assoc=4");
   command->callback([options] { run_vcache(*options); });
 }
 

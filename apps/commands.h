@@ -15,6 +15,7 @@ void add_info_command(CLI::App& app);
 void add_convert_command(CLI::App& app);
 void add_reorder_command(CLI::App& app);
 void add_vcache_command(CLI::App& app);
+void add_meshlets_command(CLI::App& app);
 void add_vipm_command(CLI::App& app);
 void add_adjacency_command(CLI::App& app);
 void add_render_command(CLI::App& app);

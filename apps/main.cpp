@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   rastrace::add_convert_command(app);
   rastrace::add_reorder_command(app);
   rastrace::add_vcache_command(app);
+  rastrace::add_meshlets_command(app);
   rastrace::add_vipm_command(app);
   rastrace::add_adjacency_command(app);
   rastrace::add_render_command(app);

@@ -4,6 +4,7 @@
 #include <map>
 #include <sstream>
 
+#include "cache_sim/cache_spec.h"
 #include "cache_sim/eviction_charged.h"
 #include "cache_sim/vertex_cache.h"
 #include "core/error.h"
@@ -46,7 +47,10 @@ Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheT
                       {"mesh_faces", mesh.face_count()},
                       {"mesh_vertices", mesh.vertex_count()},
                       {"seed", static_cast<std::int64_t>(spec.seed)},
-                      {"bandwidth_formula", "acmr * 32 + indices_per_triangle * 2 bytes/triangle"},
+                      {"bandwidth_formula", "acmr * " + std::to_string(spec.vertex_bytes) +
+                                                " + indices_per_triangle * 2 bytes/triangle"},
+                      {"vertex_bytes", spec.vertex_bytes},
+                      {"fetch_cache", format_cache_spec(spec.fetch_cache)},
                       {"accounting", spec.eviction_charged ? "evictions (NVIDIA Mesh Tools)" : "misses"}};
   if (spec.iteration_budget) table.parameters.emplace_back("local_iterations", spec.iteration_budget);
   table.columns = {{"algo", "algorithm", 0},
@@ -60,13 +64,16 @@ Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheT
                    {"atvr", "ATVR", 3},
                    {"indices_per_triangle", "indices/triangle", 3},
                    {"vertices_sent", "vertices sent", 0},  // Yang et al.'s strip cost (reorder/strip.h)
-                   {"bandwidth", "bytes/triangle", 2}};
+                   {"bandwidth", "bytes/triangle", 2},
+                   {"fetch_bytes", "bytes fetched", 0},  // vertex-buffer fetch (cache_sim/vertex_fetch.h)
+                   {"overfetch", "overfetch", 3}};
   if (spec.with_time) table.columns.push_back({"seconds", "seconds", 4});
 
   // An ordering depends on (algorithm, target, policy) only: computed once, simulated per size.
   struct Run {
     Ordering ordering;
     double seconds;
+    VertexFetchStats fetch;
   };
   for (const ReorderAlgorithm* algorithm : algorithms) {
     for (const VertexCachePolicy policy : spec.policies) {
@@ -84,7 +91,9 @@ Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheT
           const auto start = std::chrono::steady_clock::now();
           Ordering ordering = algorithm->run(mesh, params);
           const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-          found = runs.emplace(target, Run{std::move(ordering), seconds}).first;
+          const VertexFetchStats fetch = simulate_vertex_fetch(ordering.indices, ordering.type, ordering.restart_index,
+                                                               spec.vertex_bytes, spec.fetch_cache);
+          found = runs.emplace(target, Run{std::move(ordering), seconds, fetch}).first;
         }
         const Ordering& ordering = found->second.ordering;
         VertexStreamStats stats =
@@ -103,7 +112,9 @@ Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheT
             stats.atvr(),
             stats.indices_per_triangle(),
             strip_stats(ordering.indices, ordering.type, ordering.restart_index).vertices_sent,
-            stats.acmr() * 32.0 + stats.indices_per_triangle() * 2.0};
+            stats.acmr() * spec.vertex_bytes + stats.indices_per_triangle() * 2.0,
+            found->second.fetch.bytes_fetched,
+            found->second.fetch.overfetch()};
         if (spec.with_time) row.emplace_back(found->second.seconds);
         table.add_row(std::move(row));
       }

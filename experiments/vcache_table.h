@@ -1,12 +1,14 @@
 // The post-transform vertex cache under each ordering, as `rastrace vcache` and the report print
 // it: one row per algorithm, policy and cache size with ACMR, ATVR, misses, indices per triangle,
-// Hoppe's bandwidth (ACMR * 32 + indices per triangle * 2 bytes per triangle) and run time.
+// Hoppe's bandwidth (ACMR * 32 + indices per triangle * 2 bytes per triangle), the vertex-buffer
+// bytes fetched and overfetch, and run time.
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "cache_sim/vertex_fetch.h"
 #include "core/table.h"
 #include "reorder/ordering.h"
 
@@ -24,6 +26,10 @@ struct VcacheTableSpec {
   // Count transforms as NVIDIA Mesh Tools charged them (cache_sim/eviction_charged.h), which is
   // how Castano's grid tables were counted; FIFO only. False: true misses.
   bool eviction_charged = false;
+  // Vertex-buffer fetch (cache_sim/vertex_fetch.h): bytes per vertex (also the bandwidth's) and
+  // the byte cache the ordering's index stream reads the vertex buffer through.
+  std::uint32_t vertex_bytes = 32;
+  CacheConfig fetch_cache = meshopt_fetch_cache();
 };
 
 // Throws InputError for an unknown algorithm, a cache of 0 entries, or eviction-charged LRU.

@@ -20,7 +20,7 @@ TEST(VcacheCli, CastanoRowsAsCsv) {
                         "csv", "--no-time"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("algo,policy,cache,target,triangles,vertices,misses,acmr,atvr,indices_per_triangle,vertices_"
-                       "sent,bandwidth\n"),
+                       "sent,bandwidth,fetch_bytes,overfetch\n"),
             std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("scanline,fifo,16,16,512,289,544,"), std::string::npos) << r.out;
