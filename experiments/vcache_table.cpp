@@ -11,8 +11,6 @@
 
 namespace rastrace {
 
-namespace {
-
 std::vector<const ReorderAlgorithm*> select_algorithms(const std::string& list, const Mesh& mesh) {
   std::vector<const ReorderAlgorithm*> selected;
   if (list == "all") {
@@ -28,8 +26,6 @@ std::vector<const ReorderAlgorithm*> select_algorithms(const std::string& list, 
   }
   return selected;
 }
-
-}  // namespace
 
 Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheTableSpec& spec) {
   for (const unsigned cache : spec.caches)
