@@ -23,5 +23,6 @@ void add_compare_command(CLI::App& app);
 void add_texsweep_command(CLI::App& app);
 void add_report_command(CLI::App& app);
 void add_reproduce_command(CLI::App& app);
+void add_overdraw_command(CLI::App& app);
 
 }  // namespace rastrace

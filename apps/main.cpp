@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   rastrace::add_texsweep_command(app);
   rastrace::add_report_command(app);
   rastrace::add_reproduce_command(app);
+  rastrace::add_overdraw_command(app);
 
   try {
     app.parse(argc, argv);

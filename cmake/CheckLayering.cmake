@@ -16,10 +16,11 @@ set(RASTRACE_MODULE_DAG
   "reorder: scenes cache_sim traces core"
   "reorder_adjacency: reorder"
   "lod: reorder cache_sim scenes"
+  "overdraw: core"
   "raster: scenes traces"
   "pipeline: raster cache_sim reorder"
   "reference: pipeline"
-  "experiments: reference pipeline raster reorder_adjacency reorder lod cache_sim traces scenes core"
+  "experiments: reference pipeline raster reorder_adjacency reorder lod overdraw cache_sim traces scenes core"
   "rastrace_commands: experiments"
   "rastrace: rastrace_commands"
 )

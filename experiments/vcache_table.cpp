@@ -12,8 +12,6 @@
 
 namespace rastrace {
 
-namespace {
-
 std::vector<const ReorderAlgorithm*> select_algorithms(const std::string& list, const Mesh& mesh) {
   std::vector<const ReorderAlgorithm*> selected;
   if (list == "all") {
@@ -29,8 +27,6 @@ std::vector<const ReorderAlgorithm*> select_algorithms(const std::string& list, 
   }
   return selected;
 }
-
-}  // namespace
 
 Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheTableSpec& spec) {
   for (const unsigned cache : spec.caches)

@@ -32,6 +32,10 @@ struct VcacheTableSpec {
   CacheConfig fetch_cache = meshopt_fetch_cache();
 };
 
+// The algorithms of an --algo list: "all" (those that apply to the mesh) or "a,b,c"; throws
+// InputError for an unknown or empty name.
+std::vector<const ReorderAlgorithm*> select_algorithms(const std::string& list, const Mesh& mesh);
+
 // Throws InputError for an unknown algorithm, a cache of 0 entries, or eviction-charged LRU.
 Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheTableSpec& spec);
 

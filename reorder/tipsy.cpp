@@ -17,11 +17,14 @@
 #include <memory>
 
 #include "reorder/ordering.h"
+#include "reorder/tipsy.h"
 #include "reorder/vertex_faces.h"
 
 namespace rastrace {
 
-Ordering reorder_tipsy(const Mesh& mesh, const ReorderParams& params) {
+Ordering reorder_tipsy(const Mesh& mesh, const ReorderParams& params) { return tipsify(mesh, params, nullptr); }
+
+Ordering tipsify(const Mesh& mesh, const ReorderParams& params, std::vector<std::uint32_t>* path_starts) {
   const MeshTopology topology = build_vertex_faces(mesh);
   const std::uint32_t vertex_count = topology.vertex_count, face_count = topology.face_count;
   const std::uint32_t* idx = mesh.indices.data();
@@ -49,6 +52,7 @@ Ordering reorder_tipsy(const Mesh& mesh, const ReorderParams& params) {
   std::uint32_t time = k + 1;
   std::uint32_t input_cursor = 0;
   std::int64_t fan = vertex_count > 0 ? 0 : -1;
+  if (path_starts && fan >= 0) path_starts->push_back(0);
   while (fan >= 0) {
     const std::size_t fan_start = dead_end_size;
     const auto fan_vertex = static_cast<std::uint32_t>(fan);
@@ -98,6 +102,8 @@ Ordering reorder_tipsy(const Mesh& mesh, const ReorderParams& params) {
         next = v;
       }
     }
+    // A dead end: the next fan does not continue this one (the overdraw pass cuts clusters here).
+    if (next < 0 && path_starts) path_starts->push_back(static_cast<std::uint32_t>(order_out - ordering.face_order.data()));
     if (next < 0) {
       while (dead_end_size > 0) {
         const std::uint32_t v = dead_end[--dead_end_size];
