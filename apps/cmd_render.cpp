@@ -1,10 +1,12 @@
 // `rastrace render SCENE -o image.png [--trace out.rtrace] [--vcache entries=16,policy=fifo]
-//  [--tcache size=16KiB,line=64B,assoc=4,policy=lru,layout=block4] [--raster tiled8] [--filter trilinear]
+//  [--tcache size=16KiB,line=64B,assoc=4,policy=lru,layout=block4] [--zcache model=attila]
+//  [--ccache model=attila] [--depth-test early|late] [--hiz] [--raster tiled8] [--filter trilinear]
 //  [--vipm METHOD --lod N] [--json]`:
 // draws a scene with the software pipeline (in a triangle ordering, or at a VIPM level of detail),
-// simulating a post-transform vertex cache and a texture cache live (and writing the trace when
-// asked), and prints what the frame cost: triangles drawn, vertices shaded, ACMR, fragments,
-// texel accesses, texture misses and bytes per fragment.
+// simulating a post-transform vertex cache, a texture cache and the depth and colour caches live
+// (and writing the trace when asked), and prints what the frame cost: triangles drawn, vertices
+// shaded, ACMR, fragments, texel accesses, texture misses, bytes per fragment, the overdraw, and
+// the four streams of memory traffic (experiments/frame_traffic.h) per frame and per pixel.
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -16,6 +18,8 @@
 #include "core/error.h"
 #include "core/table.h"
 #include "core/units.h"
+#include "cache_sim/cache_spec.h"
+#include "experiments/frame_traffic.h"
 #include "experiments/vipm_render.h"
 #include "pipeline/scene_order.h"
 #include "traces/tee_sink.h"
@@ -32,6 +36,8 @@ struct RenderCommand {
   std::string trace;
   std::string vcache = "entries=16,policy=fifo";
   std::string tcache = "size=16KiB,line=64B,assoc=4,policy=lru,layout=block4";
+  std::string zcache = "model=attila";
+  std::string ccache = "model=attila";
   std::string old_layout;  // --layout, replaced by the texture cache's layout key
   std::string vipm;        // a VIPM method: draw the LoD `lod` instead of an ordering
   std::string lod;         // collapses done, with --vipm
@@ -49,6 +55,11 @@ void run_render(const RenderCommand& command) {
     throw InputError("--layout '" + command.old_layout + "': write the layout in the texture cache spec, e.g. " +
                      "--tcache size=16KiB,line=64B,assoc=4,policy=lru,layout=" + command.old_layout);
   const TextureCacheSpec tcache = parse_tcache_spec(command.tcache);
+  FrameCaches caches;
+  caches.vertex = vcache;
+  caches.texture = tcache;
+  caches.depth = parse_framebuffer_cache(command.zcache, "--zcache", FramebufferBuffer::Depth);
+  caches.colour = parse_framebuffer_cache(command.ccache, "--ccache", FramebufferBuffer::Colour);
 
   if (command.vipm.empty() && !command.lod.empty())
     throw InputError("--lod '" + command.lod.substr(0, 32) + "': the level of detail needs --vipm METHOD" +
@@ -74,11 +85,8 @@ void run_render(const RenderCommand& command) {
   }
   const TextureLevels levels = texture_levels(scene);
 
-  CacheBankConfig bank_config;
-  bank_config.vertex = {vcache};
-  bank_config.texture = {tcache};
-  bank_config.three_c = false;
-  LiveBankSink bank(bank_config, levels);
+  LiveBankSink bank(frame_bank_config(caches), levels,
+                    FrameSize{static_cast<std::uint32_t>(scene.width), static_cast<std::uint32_t>(scene.height)});
   std::vector<EventSink*> sinks = {&bank};
   std::optional<TraceWriter> writer;
   if (!command.trace.empty()) {
@@ -98,6 +106,7 @@ void run_render(const RenderCommand& command) {
   const PipelineStats& p = result.pipeline;
   const RasterStats& r = result.raster;
   const CacheStats& t = bank.texture_stats().at(0);
+  const FrameTraffic traffic = measure_frame_traffic(caches, bank, result);
   const VertexStreamStats& v = bank.vertex_stats().at(0);
   if (v.misses != p.vertices_shaded)  // the live model and the pipeline count the same misses
     throw std::logic_error("vertex cache model disagrees with the pipeline's shader invocations");
@@ -115,7 +124,11 @@ void run_render(const RenderCommand& command) {
                       {"wrap", command.flags.wrap},
                       {"lod_formula", command.flags.lod},
                       {"cull", command.flags.cull},
+                      {"depth_test", command.flags.depth_test},
+                      {"hiz", command.flags.hiz ? "on" : "off"},
                       {"image", command.output}};
+  for (auto& parameter : frame_cache_parameters(caches))
+    if (parameter.first != "vcache" && parameter.first != "tcache") table.parameters.push_back(std::move(parameter));
   if (vipm) {
     table.parameters.emplace_back("vipm", command.vipm);
     table.parameters.emplace_back("vipm_lod", describe_vipm_lods(vipm->parts));
@@ -128,14 +141,21 @@ void run_render(const RenderCommand& command) {
                    {"acmr", "ACMR", 3},
                    {"fragments", "fragments", 0},
                    {"fragments_shaded", "fragments shaded", 0},
+                   {"depth_writes", "depth writes", 0},
                    {"texel_accesses", "texel accesses", 0},
                    {"texture_misses", "texture misses", 0},
                    {"texture_miss_rate", "miss rate", 4},
-                   {"texture_bytes", "bytes fetched", 0},
-                   {"bytes_per_fragment", "bytes/fragment", 3}};
-  table.add_row({p.triangles, p.degenerate, p.culled, p.vertices_shaded, p.acmr(), r.fragments, r.fragments_passed,
-                 r.texel_reads, t.misses, t.miss_rate(), t.bytes_fetched,
-                 r.fragments_passed ? double(t.bytes_fetched) / double(r.fragments_passed) : 0.0});
+                   {"bytes_per_fragment", "texture bytes/fragment", 3}};
+  for (TableColumn& column : frame_traffic_columns()) table.columns.push_back(std::move(column));
+  std::vector<TableCell> row;
+  for (const std::uint64_t count : {p.triangles, p.degenerate, p.culled, p.vertices_shaded}) row.emplace_back(count);
+  row.emplace_back(p.acmr());
+  for (const std::uint64_t count : {r.fragments, r.fragments_shaded, r.fragments_passed, r.texel_reads, t.misses})
+    row.emplace_back(count);
+  row.emplace_back(t.miss_rate());
+  row.emplace_back(r.fragments_shaded ? double(t.bytes_fetched) / double(r.fragments_shaded) : 0.0);
+  for (TableCell& cell : frame_traffic_cells(traffic)) row.push_back(std::move(cell));
+  table.add_row(std::move(row));
   std::cout << render_table(table, format);
 }
 
@@ -143,7 +163,7 @@ void run_render(const RenderCommand& command) {
 
 void add_render_command(CLI::App& app) {
   CLI::App* command =
-      app.add_subcommand("render", "Draw a scene, simulate its vertex and texture caches, write the image");
+      app.add_subcommand("render", "Draw a scene, simulate its vertex, texture, depth and colour caches, write the image");
   auto options = std::make_shared<RenderCommand>();
   add_scene_render_flags(*command, options->flags);
   command->add_option("-o,--output", options->output, "Colour image (PNG, or any format by extension)")->required();
@@ -152,6 +172,10 @@ void add_render_command(CLI::App& app) {
   command->add_option("--vcache", options->vcache, "Post-transform vertex cache (cache spec, README)")
       ->capture_default_str();
   command->add_option("--tcache", options->tcache, "Texture cache and layout (cache spec, README)")
+      ->capture_default_str();
+  command->add_option("--zcache", options->zcache, "Depth cache (cache spec, README; source=depth implied)")
+      ->capture_default_str();
+  command->add_option("--ccache", options->ccache, "Colour cache (cache spec, README; source=colour implied)")
       ->capture_default_str();
   command->add_option("--layout", options->old_layout)->group("");  // the old spelling: an error naming the new
   command
@@ -170,7 +194,9 @@ void add_render_command(CLI::App& app) {
       "layout=morton --json\n"
       "  rastrace render builtin:bunny -o bunny.png --order tipsy --vcache entries=16,policy=fifo --trace "
       "bunny.rtrace\n"
-      "  rastrace render builtin:bunny -o bunny-lod.png --vipm sliding --lod 30000 --trace bunny-lod.rtrace");
+      "  rastrace render builtin:bunny -o bunny-lod.png --vipm sliding --lod 30000 --trace bunny-lod.rtrace\n"
+      "  rastrace render builtin:bunny -o bunny.png --order tipsy --depth-test late --hiz --zcache "
+      "model=attila,size=32KiB --ccache size=8KiB,line=64B,assoc=2,policy=fifo,layout=morton,pixel=4B --json");
   command->callback([options] { run_render(*options); });
 }
 

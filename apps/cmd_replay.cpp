@@ -26,7 +26,8 @@ void add_replay_command(CLI::App& app) {
                    "Caches to simulate (repeatable; cache spec, README; alternatives a/b expand to every "
                    "combination). Byte cache: size=16KiB,line=64B,assoc=4|full,policy=fifo|lru|random|opt,"
                    "layout=linear|block2..block16|morton[,texel=4B][,align=4KiB][,source=texel|vertex|address]"
-                   "[,stride=32B][,seed=1]. Post-transform vertex cache: entries=16,policy=fifo|lru")
+                   "[,stride=32B][,seed=1]. Depth or colour cache: source=depth|colour with size=... or model=attila"
+                   "[,pixel=4B]. Post-transform vertex cache: entries=16,policy=fifo|lru")
       ->required();
   command->add_option("--format", *format, "Table format: md, csv, latex or json");
   command->add_option("-o,--output", *output, "Write the table to this file (atomically) instead of stdout");
@@ -47,6 +48,15 @@ void add_replay_command(CLI::App& app) {
     for (const std::string& text : *specs) {
       const CacheSpec spec = parse_cache_spec(text, "--cache");
       for (const VertexCacheSpec& vertex : vertex_caches(spec)) bank.vertex.push_back(vertex);
+      for (const FramebufferCacheSpec& framebuffer : framebuffer_caches(spec)) {
+        try {
+          validate(framebuffer.cache);
+        } catch (const InputError& e) {
+          throw InputError("--cache '" + text + "': " + e.what());
+        }
+        bank.framebuffer.push_back(framebuffer);
+      }
+      if (spec.buffer) continue;
       for (const ByteCacheChoice& choice : byte_caches(spec)) {
         try {
           validate(choice.cache);
@@ -69,9 +79,13 @@ void add_replay_command(CLI::App& app) {
         }
       }
     }
-    LiveBankSink sink(bank, summary.metadata.textures);
+    if (!bank.framebuffer.empty() && summary.format == TraceFileFormat::Container && summary.framebuffer == 0)
+      throw_in_file(*trace, "the trace has no framebuffer records (written before trace version 2, or by a "
+                            "renderer without them): expected them for source=depth|colour caches");
+    LiveBankSink sink(bank, summary.metadata.textures, FrameSize{summary.metadata.width, summary.metadata.height});
     std::optional<Progress> progress;
-    if (summary.has_counts) progress.emplace("replay", summary.vertices + summary.texels + summary.addresses);
+    if (summary.has_counts)
+      progress.emplace("replay", summary.vertices + summary.texels + summary.addresses + summary.framebuffer);
     replay_file(*trace, sink, {}, progress ? &*progress : nullptr);
     if (progress) progress->finish();
 
@@ -115,6 +129,7 @@ void add_replay_command(CLI::App& app) {
     add_byte_table(texture_rows, sink.texture_stats(), "Texture caches", "texel");
     add_byte_table(vertex_buffer_rows, sink.vertex_buffer_stats(), "Vertex buffer caches", "vertex");
     add_byte_table(address_rows, sink.address_stats(), "Address caches", "address");
+    if (!bank.framebuffer.empty()) tables.push_back(framebuffer_cache_table(parameters, bank.framebuffer, sink.framebuffer_stats()));
     write_output(*output, render_tables(tables, table_format));
   });
 }

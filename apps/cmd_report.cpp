@@ -28,7 +28,7 @@ void add_report_command(CLI::App& app) {
       ->capture_default_str();
   command->add_option("-o,--output", spec.output_dir, "Folder for report.md, plots/, images/ and traces/")
       ->capture_default_str();
-  command->add_option("--order", spec.orders, "Orderings whose texture traffic is measured")->capture_default_str();
+  command->add_option("--order", spec.orders, "Orderings whose texture and frame traffic is measured")->capture_default_str();
   command->add_option("--vcache-order", spec.vcache_orders, "Orderings in the vertex cache table")
       ->capture_default_str();
   add_sweep_flags(*command, c->sweep);

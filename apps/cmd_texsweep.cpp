@@ -1,8 +1,9 @@
 // `rastrace texsweep [SCENE] [--experiment fig6|fig7|fig9|fig11] [--order strip,texgroup]
 //  [--raster scanline,tiled8] [--tcache size=1KiB..64KiB,policy=fifo/lru/opt,layout=...]`:
 // renders the scene once per triangle ordering and traversal order, records each texel trace and
-// sweeps texture caches over it (texture_experiment.h). The named experiments are the figures of
-// Yang, Mitra and Huang; explicit flags override what an experiment sets.
+// sweeps texture caches over it (texture_experiment.h); a second table gives each run's whole
+// frame traffic (vertex, texture, depth, colour). The named experiments are the figures of Yang,
+// Mitra and Huang; explicit flags override what an experiment sets.
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
@@ -126,8 +127,13 @@ void run_texsweep(const TexsweepCommand& command, const CLI::App& app) {
   experiment.trace_dir = c.trace_dir;  // empty: temporary, removed afterwards
 
   const std::vector<TextureRun> runs = run_texture_experiment(experiment);
-  if (!c.plot_dir.empty()) write_plots(c.plot_dir, stem, experiment.title, runs);
-  write_output(c.output, render_table(texture_experiment_table(experiment, runs), format));
+  if (!c.plot_dir.empty()) {
+    write_plots(c.plot_dir, stem, experiment.title, runs);
+    write_frame_traffic_plot((std::filesystem::path(c.plot_dir) / (stem + "-frame.png")).string(),
+                             "Frame traffic per ordering: " + c.scene, frame_traffic_rows(runs));
+  }
+  const Table tables[] = {texture_experiment_table(experiment, runs), frame_experiment_table(experiment, runs)};
+  write_output(c.output, render_tables(tables, format));
 }
 
 }  // namespace

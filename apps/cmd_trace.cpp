@@ -35,6 +35,7 @@ void add_trace_command(CLI::App& app) {
                     {"resolution", std::to_string(m.width) + "x" + std::to_string(m.height)},
                     {"filter", m.filter},
                     {"tool_version", m.tool_version},
+                    {"trace_version", static_cast<std::int64_t>(reader.version())},
                     {"textures", static_cast<std::int64_t>(m.textures.size())}};
     t.columns = {{"kind", "records of kind", 0},
                  {"records", "records", 0},
@@ -48,7 +49,8 @@ void add_trace_command(CLI::App& app) {
       in.seekg(static_cast<std::streamoff>(reader.file_bytes() - kFooterBytes));
       in.read(reinterpret_cast<char*>(&index_offset), 8);
     }
-    for (const RecordKind kind : {RecordKind::Vertex, RecordKind::Texel, RecordKind::Address}) {
+    for (const RecordKind kind :
+         {RecordKind::Vertex, RecordKind::Texel, RecordKind::Address, RecordKind::Framebuffer}) {
       std::int64_t chunks = 0;
       std::uint64_t bytes = 0;
       for (std::size_t i = 0; i < reader.chunks().size(); ++i) {
@@ -61,7 +63,8 @@ void add_trace_command(CLI::App& app) {
       t.add_row({to_string(kind), records, chunks, bytes, records ? double(bytes) / double(records) : 0.0});
     }
     const std::uint64_t records =
-        reader.records(RecordKind::Vertex) + reader.records(RecordKind::Texel) + reader.records(RecordKind::Address);
+        reader.records(RecordKind::Vertex) + reader.records(RecordKind::Texel) + reader.records(RecordKind::Address) +
+        reader.records(RecordKind::Framebuffer);
     t.parameters.emplace_back("file_bytes", reader.file_bytes());
     t.parameters.emplace_back("bytes_per_record", records ? double(reader.file_bytes()) / double(records) : 0.0);
     std::cout << render_table(t, parse_table_format(*info_format));

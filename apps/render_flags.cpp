@@ -17,6 +17,11 @@ void add_scene_render_flags(CLI::App& command, SceneRenderFlags& flags) {
       ->capture_default_str();
   command.add_option("--cull", flags.cull, "Face culling: none, back or front")->capture_default_str();
   command.add_flag("--lighting", flags.lighting, "Gouraud lighting with one directional light");
+  command
+      .add_option("--depth-test", flags.depth_test,
+                  "early (before shading and texturing, as GPUs do for opaque geometry) or late")
+      ->capture_default_str();
+  command.add_flag("--hiz", flags.hiz, "Hierarchical Z: reject 2x2 quads against each 8x8 tile's farthest depth");
   command.add_option("--order", flags.order, "Triangle ordering (rastrace reorder --help lists them)")
       ->capture_default_str();
   command.add_option("--order-cache", flags.order_cache, "Cache size the ordering optimizes for")

@@ -1,6 +1,6 @@
 // Rendering speed: fragments per second for a 1024x768 trilinear textured frame of bunny00
 // (75,408 triangles, a 1024x1024 checker of 32x32 squares on spherical UVs), rastrace without
-// events, rastrace tracing every vertex fetch and texel access into memory, and Mesa's OSMesa drawing the same frame
+// events, rastrace tracing every vertex fetch, texel access and framebuffer access into memory, and Mesa's OSMesa drawing the same frame
 // with llvmpipe (LP_NUM_THREADS=0: single-threaded) and softpipe. Each OSMesa measurement runs
 // in a child process (one Gallium driver per process) and reports its best of 5 frames in CPU
 // time (the machine is shared: rastrace's rows are CPU time too), so the one-time LLVM
@@ -79,12 +79,13 @@ void BM_RastraceTracingToMemory(benchmark::State& state) {
     state.PauseTiming();
     sink.fetches.clear();  // keep the capacity: the frame's events are stored, not reallocated
     sink.texels.clear();
+    sink.framebuffer.clear();
     sink.draws.clear();
     sink.draw_first_fetch.clear();
     state.ResumeTiming();
     const RenderResult result = render_scene(scene, options, &sink);
     fragments = result.raster.fragments_passed;
-    events = sink.fetches.size() + sink.texels.size();
+    events = sink.fetches.size() + sink.texels.size() + sink.framebuffer.size();
   }
   report(state, fragments);
   state.counters["events"] = static_cast<double>(events);

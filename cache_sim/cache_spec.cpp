@@ -140,11 +140,36 @@ void set_seed(CacheSpec& s, const std::vector<std::string>& values, const Contex
 }
 
 void set_source(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
-  try {
-    s.source = parse_sweep_source(values.front());
-  } catch (const InputError&) {
-    bad_value(c, "source", values.front(), "texel, vertex or address");
+  const std::string& v = values.front();
+  if (v == "depth" || v == "colour") {
+    s.buffer = v == "depth" ? FramebufferBuffer::Depth : FramebufferBuffer::Colour;
+    return;
   }
+  try {
+    s.source = parse_sweep_source(v);
+  } catch (const InputError&) {
+    bad_value(c, "source", v, "texel, vertex, address, depth or colour");
+  }
+}
+
+void set_pixel(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  const std::uint32_t pixel = at_most_32_bits(one_size(values, c, "pixel"), c, "pixel", 16);
+  for (LayoutSpec& l : s.layouts) l.texel_bytes = pixel;
+}
+
+// ATTILA's depth and colour caches (del Barrio et al. 2006): 4 ways of 16 lines (ATTILA counts
+// lines per way), each line an 8x8-pixel tile of 4-byte pixels: 256 B lines, 16 KiB, LRU.
+void set_model(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  if (values.front() != "attila") bad_value(c, "model", values.front(), "attila");
+  s.sizes = {16 * 1024};
+  s.lines = {256};
+  s.assocs = {4};
+  s.policies = {ReplacementPolicy::Lru};
+  const LayoutSpec base = s.layouts.front();
+  LayoutSpec tiles = parse_layout("block8");
+  tiles.texel_bytes = base.texel_bytes;
+  tiles.alignment = base.alignment;
+  s.layouts = {tiles};
 }
 
 void set_stride(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
@@ -163,8 +188,13 @@ constexpr KeyRule kKeys[] = {
     {"texel", kByteKey, false, "texel bytes, e.g. texel=4B", nullptr, set_texel},
     {"align", kByteKey, false, "level alignment, e.g. align=4KiB", nullptr, set_align},
     {"seed", kByteKey, false, "the random policy's seed, e.g. seed=1", nullptr, set_seed},
-    {"source", kByteKey, false, "texel|vertex|address", nullptr, set_source},
+    {"source", kByteKey, false, "texel|vertex|address|depth|colour", nullptr, set_source},
     {"stride", kByteKey, false, "bytes per vertex for source=vertex, e.g. stride=32B", nullptr, set_stride},
+    {"pixel", kByteKey, false, "bytes per pixel for source=depth|colour, e.g. pixel=4B", nullptr, set_pixel},
+    {"model", kByteKey, false,
+     "attila: ATTILA's depth and colour caches, size=16KiB,line=256B,assoc=4,policy=lru,layout=block8 "
+     "(other keys override)",
+     nullptr, set_model},
 };
 
 std::string key_names() {
@@ -281,14 +311,32 @@ CacheSpec parse_cache_spec(const std::string& text, const std::string& option) {
     throw InputError(
         c.where("missing entries=... (a vertex cache, e.g. entries=16,policy=fifo) or size=... "
                 "(a byte cache, e.g. size=16KiB,line=64B,assoc=4,policy=lru)"));
-  // texel and align apply to every layout, whichever order they were written in.
-  std::stable_partition(items.begin(), items.end(), [](const Item& i) { return std::string(i.key->name) == "layout"; });
+  // A model comes first (the keys given beside it override it), then layouts: texel, pixel and
+  // align apply to every layout, whichever order they were written in.
+  const auto rank = [](const Item& i) {
+    const std::string name = i.key->name;
+    return name == "model" ? 0 : name == "layout" ? 1 : 2;
+  };
+  std::stable_sort(items.begin(), items.end(), [&](const Item& a, const Item& b) { return rank(a) < rank(b); });
   for (const Item& item : items)
     (spec.kind == CacheKind::Vertex ? item.key->set_vertex : item.key->set_byte)(spec, item.values, c);
   if (spec.kind == CacheKind::Vertex && spec.entries.empty())
     throw InputError(c.where("missing entries=...: a vertex cache needs its size, e.g. entries=16"));
   if (spec.kind == CacheKind::Byte && spec.sizes.empty())
     throw InputError(c.where("missing size=...: a byte cache needs its capacity, e.g. size=16KiB"));
+  for (const Item& item : items) {
+    const std::string name = item.key->name;
+    if (name == "pixel" && !spec.buffer)
+      throw InputError(c.where("pixel= is the bytes per pixel of a depth or colour cache: add source=depth or "
+                               "source=colour (a texture cache's element is texel=)"));
+    if ((name == "texel" || name == "stride" || name == "align") && spec.buffer)
+      throw InputError(c.where(name + "= does not apply to a " + to_string(*spec.buffer) +
+                               " cache: its element is a pixel (pixel=4B)"));
+    if (name == "policy" && spec.buffer &&
+        std::find(spec.policies.begin(), spec.policies.end(), ReplacementPolicy::Opt) != spec.policies.end())
+      throw InputError(c.where("policy=opt: a depth or colour cache writes back what it evicts; expected fifo, lru "
+                               "or random"));
+  }
   return spec;
 }
 
@@ -349,6 +397,10 @@ ByteCacheChoice parse_byte_cache(const std::string& text, const std::string& opt
 }
 
 SweepSpec sweep_spec(const CacheSpec& spec, SweepSource fallback) {
+  if (spec.buffer)
+    throw InputError(std::string("source=") + to_string(*spec.buffer) +
+                     ": depth and colour caches are replayed (rastrace replay --cache ...,source=" +
+                     to_string(*spec.buffer) + "), not swept");
   SweepSpec out;
   out.source = spec.source.value_or(fallback);
   out.sizes = spec.sizes;
@@ -365,6 +417,44 @@ std::string format_cache_spec(const CacheConfig& cache) {
   return "size=" + format_byte_size(cache.size_bytes) + ",line=" + format_byte_size(cache.line_bytes) +
          ",assoc=" + (cache.assoc == 0 ? std::string("full") : std::to_string(cache.assoc)) +
          ",policy=" + to_string(cache.policy);
+}
+
+FramebufferCacheSpec attila_framebuffer_cache(FramebufferBuffer buffer) {
+  return parse_framebuffer_cache("model=attila", "model", buffer);
+}
+
+std::vector<FramebufferCacheSpec> framebuffer_caches(const CacheSpec& spec) {
+  std::vector<FramebufferCacheSpec> out;
+  if (spec.kind != CacheKind::Byte || !spec.buffer) return out;
+  for (const ByteCacheChoice& choice : byte_caches(spec)) out.push_back({*spec.buffer, choice.cache, choice.layout});
+  return out;
+}
+
+FramebufferCacheSpec parse_framebuffer_cache(const std::string& text, const std::string& option,
+                                             FramebufferBuffer buffer) {
+  // The option names the buffer, so source= may be left out.
+  bool has_source = false;
+  for (const std::string& item : split(text, ',')) has_source = has_source || item.rfind("source=", 0) == 0;
+  const std::string full = has_source ? text : "source=" + std::string(to_string(buffer)) + "," + text;
+  const CacheSpec spec = parse_cache_spec(full, option);
+  if (spec.kind != CacheKind::Byte || !spec.buffer || *spec.buffer != buffer)
+    throw InputError(option + " '" + text + "': expected a " + to_string(buffer) +
+                     " cache, e.g. model=attila or size=16KiB,line=256B,assoc=4,policy=lru,layout=block8,pixel=4B");
+  const std::vector<FramebufferCacheSpec> caches = framebuffer_caches(spec);
+  if (caches.size() != 1)
+    throw InputError(option + " '" + text + "': expected one cache, not " + std::to_string(caches.size()) +
+                     " alternatives");
+  try {
+    validate(caches.front().cache);
+  } catch (const InputError& e) {
+    throw InputError(option + " '" + text + "': " + e.what());
+  }
+  return caches.front();
+}
+
+std::string format_framebuffer_cache_spec(const FramebufferCacheSpec& cache) {
+  return "source=" + std::string(to_string(cache.buffer)) + "," + format_cache_spec(cache.cache) +
+         ",layout=" + layout_name(cache.layout) + ",pixel=" + format_byte_size(cache.layout.texel_bytes);
 }
 
 std::string format_cache_spec(const VertexCacheSpec& cache) {

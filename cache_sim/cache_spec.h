@@ -12,6 +12,12 @@
 //                                   layout=linear|block2|block4|block8|block16|morton (linear),
 //                                   texel=SIZE (4B), align=SIZE (4KiB), seed=N (1),
 //                                   source=texel|vertex|address (what the trace holds), stride=SIZE (32B)
+//   depth or colour cache           a byte cache with source=depth|colour: its elements are pixels
+//                                   (pixel=SIZE, 4B), its layout lays out the frame; write-back
+//                                   (write_back_cache.h), so policy=opt is refused
+//   model=attila                    ATTILA's depth and colour caches: size=16KiB,line=256B,assoc=4,
+//                                   policy=lru,layout=block8 (4 ways of 16 lines of 8x8-pixel tiles);
+//                                   keys given beside it override it
 // size, line, assoc, policy, layout and entries take alternatives; a spec with alternatives
 // stands for the cross product. Expansion order (the last key varies fastest), which is the
 // row order of the sweep tables: byte caches layout, policy, line, assoc, size; vertex caches
@@ -52,6 +58,7 @@ struct CacheSpec {
   std::vector<LayoutSpec> layouts{LayoutSpec{}};  // texel and align applied to every layout
   std::uint64_t seed = 1;
   std::optional<SweepSource> source;  // unset: what the trace holds
+  std::optional<FramebufferBuffer> buffer;  // source=depth|colour: a framebuffer cache
   std::uint32_t stride = 32;
 
   // How many caches the spec stands for.
@@ -73,12 +80,22 @@ std::vector<ByteCacheChoice> byte_caches(const CacheSpec& spec);
 // kind or alternatives are InputErrors; the byte cache's geometry is validated.
 VertexCacheSpec parse_vertex_cache(const std::string& text, const std::string& option);
 ByteCacheChoice parse_byte_cache(const std::string& text, const std::string& option);
-// A byte-cache spec as the sweep runs it (source: the spec's, or `fallback` when it has none).
+// Depth or colour caches: the cross product of a spec with source=depth|colour (empty otherwise).
+std::vector<FramebufferCacheSpec> framebuffer_caches(const CacheSpec& spec);
+// One cache of `buffer` (render's --zcache, --ccache): source= may be left out; validated.
+FramebufferCacheSpec parse_framebuffer_cache(const std::string& text, const std::string& option,
+                                             FramebufferBuffer buffer);
+// model=attila for one buffer.
+FramebufferCacheSpec attila_framebuffer_cache(FramebufferBuffer buffer);
+// A byte-cache spec as the sweep runs it (source: the spec's, or `fallback` when it has none);
+// InputError for depth and colour caches, which replay takes and sweep does not.
 SweepSpec sweep_spec(const CacheSpec& spec, SweepSource fallback);
 
 // The spec that describes one cache, e.g. "size=16KiB,line=64B,assoc=4,policy=lru".
 std::string format_cache_spec(const CacheConfig& cache);
 std::string format_cache_spec(const VertexCacheSpec& cache);
+// "source=depth,size=16KiB,line=256B,assoc=4,policy=lru,layout=block8,pixel=4B": every parameter.
+std::string format_framebuffer_cache_spec(const FramebufferCacheSpec& cache);
 
 // The keys, their kinds and accepted values, one line each (for --help and errors).
 std::string cache_spec_keys_help();

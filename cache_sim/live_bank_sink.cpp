@@ -34,14 +34,27 @@ struct LiveBankSink::BankCache {
   CacheStats opt_stats;
 };
 
+struct LiveBankSink::FramebufferCache {
+  FramebufferCache(const FramebufferCacheSpec& s, const FrameSize& frame)
+      : spec(s), layout(s.layout, TextureLevels{{LevelSize{frame.width, frame.height}}}), cache(s.cache) {}
+  FramebufferCacheSpec spec;
+  TextureLayout layout;  // one "texture" of one level: the frame, one element per pixel
+  WriteBackCache cache;
+};
+
+const char* to_string(FramebufferBuffer buffer) { return buffer == FramebufferBuffer::Depth ? "depth" : "colour"; }
+
 namespace {
 bool same_layout(const LayoutSpec& a, const LayoutSpec& b) {
   return a.kind == b.kind && a.block == b.block && a.texel_bytes == b.texel_bytes && a.alignment == b.alignment;
 }
 }  // namespace
 
-LiveBankSink::LiveBankSink(CacheBankConfig config, TextureLevels textures)
-    : config_(std::move(config)), textures_(std::move(textures)) {
+LiveBankSink::LiveBankSink(CacheBankConfig config, TextureLevels textures, FrameSize frame)
+    : config_(std::move(config)), textures_(std::move(textures)), frame_(frame) {
+  if (!config_.framebuffer.empty() && (frame_.width == 0 || frame_.height == 0))
+    throw InputError("depth and colour caches need the frame's size (a trace's metadata gives its resolution)");
+  for (const FramebufferCacheSpec& spec : config_.framebuffer) framebuffer_caches_.emplace_back(spec, frame_);
   for (const VertexCacheSpec& spec : config_.vertex) vertex_caches_.emplace_back(spec.policy, spec.entries);
   vertex_misses_.assign(vertex_caches_.size(), 0);
 
@@ -189,6 +202,31 @@ void LiveBankSink::address_accesses(std::span<const AddressAccess> accesses) {
   }
 }
 
+void LiveBankSink::framebuffer_accesses(std::span<const FramebufferAccess> accesses) {
+  if (finished_) throw std::logic_error("LiveBankSink: events after finish");
+  for (FramebufferCache& fc : framebuffer_caches_) {
+    const bool depth = fc.spec.buffer == FramebufferBuffer::Depth;
+    const std::uint32_t shift = fc.cache.line_shift();
+    for (const FramebufferAccess& a : accesses) {
+      if (depth == (a.op == FramebufferOp::ColourWrite)) continue;  // the other buffer's event
+      const bool read = a.op == FramebufferOp::DepthRead;
+      for (std::uint32_t i = 0; i < 4; ++i) {
+        if (!(a.mask >> i & 1u)) continue;
+        const std::uint32_t x = a.x + (i & 1u), y = a.y + (i >> 1);
+        if (!fc.layout.contains(0, 0, x, y)) [[unlikely]]
+          throw InputError("framebuffer access at pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                           "), triangle " + std::to_string(a.triangle) + ", lies outside the " +
+                           std::to_string(frame_.width) + "x" + std::to_string(frame_.height) + " frame");
+        const std::uint64_t line = fc.layout.address(0, 0, x, y) >> shift;
+        if (read)
+          fc.cache.read(line);
+        else
+          fc.cache.write(line);
+      }
+    }
+  }
+}
+
 void LiveBankSink::end_draw() {}
 
 void LiveBankSink::finish() {
@@ -215,6 +253,11 @@ void LiveBankSink::finish() {
   }
   for (auto& stream : streams_)
     for (LineGroup& group : stream->groups) std::vector<std::uint64_t>().swap(group.opt_lines);
+  framebuffer_results_.clear();
+  for (FramebufferCache& fc : framebuffer_caches_) {
+    fc.cache.flush();  // the end of the frame writes every dirty line back
+    framebuffer_results_.push_back(fc.cache.stats());
+  }
   const std::size_t nt = config_.texture.size(), nv = config_.vertex_buffer.size();
   texture_results_.assign(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(nt));
   vertex_buffer_results_.assign(all.begin() + static_cast<std::ptrdiff_t>(nt),
@@ -237,6 +280,10 @@ const std::vector<CacheStats>& LiveBankSink::texture_stats() const {
 const std::vector<CacheStats>& LiveBankSink::vertex_buffer_stats() const {
   check_finished();
   return vertex_buffer_results_;
+}
+const std::vector<WriteBackStats>& LiveBankSink::framebuffer_stats() const {
+  check_finished();
+  return framebuffer_results_;
 }
 const std::vector<CacheStats>& LiveBankSink::address_stats() const {
   check_finished();

@@ -10,6 +10,10 @@
 //                  (texture_layout.h) built from the textures' level sizes
 //   vertex_buffer  byte caches over the vertex fetches: draw d's vertex v at (d << 40) + v*stride
 //   address        byte caches over raw addresses (din / address records)
+//   framebuffer    depth and colour caches over the framebuffer events: each covered pixel of a
+//                  quad's event is one access, mapped to bytes by a pixel layout over the frame
+//                  (texture_layout.h, pixel bytes as the element), into a write-back cache
+//                  (write_back_cache.h) that reports bytes read and written; flushed at finish()
 // Byte caches report accesses, hits, misses, bytes fetched and (three_c) Dinero's compulsory /
 // capacity / conflict split from one LRU stack profile per address stream and line size.
 // OPT caches buffer their line stream (16 bytes per access, at most kOptMaxAccesses) and are
@@ -25,6 +29,7 @@
 #include "cache_sim/lru_profile.h"
 #include "cache_sim/texture_layout.h"
 #include "cache_sim/vertex_cache.h"
+#include "cache_sim/write_back_cache.h"
 #include "traces/sink.h"
 
 namespace rastrace {
@@ -44,11 +49,28 @@ struct VertexBufferCacheSpec {
   std::uint32_t stride = 32;  // bytes per vertex
 };
 
+// The framebuffer's two buffers, each with its own cache.
+enum class FramebufferBuffer : std::uint8_t { Depth, Colour };
+const char* to_string(FramebufferBuffer buffer);  // "depth", "colour"
+
+struct FramebufferCacheSpec {
+  FramebufferBuffer buffer = FramebufferBuffer::Depth;
+  CacheConfig cache;  // fifo, lru or random
+  LayoutSpec layout;  // over the frame's pixels: texel_bytes is the bytes per pixel
+};
+
+// The frame a trace draws, for the framebuffer caches' layouts.
+struct FrameSize {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+};
+
 struct CacheBankConfig {
   std::vector<VertexCacheSpec> vertex;
   std::vector<TextureCacheSpec> texture;
   std::vector<VertexBufferCacheSpec> vertex_buffer;
   std::vector<CacheConfig> address;
+  std::vector<FramebufferCacheSpec> framebuffer;
   bool three_c = true;
   // Vertex ids of different draws index different buffers: start each draw with an empty
   // post-transform cache (as hardware does between draws).
@@ -59,13 +81,16 @@ class LiveBankSink final : public EventSink {
  public:
   // Throws InputError on an invalid cache or layout. `textures` gives every texture's level sizes
   // (the trace metadata's textures); texel accesses outside them are InputErrors.
-  LiveBankSink(CacheBankConfig config, TextureLevels textures);
+  // `frame` is needed by framebuffer caches only (InputError without it).
+  LiveBankSink(CacheBankConfig config, TextureLevels textures, FrameSize frame = {});
   ~LiveBankSink() override;
 
   void begin_draw(const DrawInfo& draw) override;
   void vertex_fetches(std::span<const VertexFetch> fetches) override;
   void texel_accesses(std::span<const TexelAccess> accesses) override;
   void address_accesses(std::span<const AddressAccess> accesses) override;
+  void framebuffer_accesses(std::span<const FramebufferAccess> accesses) override;
+  bool wants_framebuffer_events() const override { return !config_.framebuffer.empty(); }
   void end_draw() override;
   void finish() override;
 
@@ -75,11 +100,13 @@ class LiveBankSink final : public EventSink {
   const std::vector<CacheStats>& texture_stats() const;
   const std::vector<CacheStats>& vertex_buffer_stats() const;
   const std::vector<CacheStats>& address_stats() const;
+  const std::vector<WriteBackStats>& framebuffer_stats() const;
 
  private:
   struct LineGroup;
   struct AddressStream;
   struct BankCache;
+  struct FramebufferCache;
 
   void feed_stream(AddressStream& stream);
   void on_vertex(std::uint32_t vertex, bool primitive_start);
@@ -107,6 +134,11 @@ class LiveBankSink final : public EventSink {
   std::vector<std::size_t> texture_streams_;
   std::vector<std::size_t> address_streams_;
   std::vector<CacheStats> texture_results_, vertex_buffer_results_, address_results_;
+
+  // Depth and colour caches.
+  FrameSize frame_;
+  std::vector<FramebufferCache> framebuffer_caches_;
+  std::vector<WriteBackStats> framebuffer_results_;
 };
 
 }  // namespace rastrace

@@ -55,6 +55,7 @@ ReplayKinds kinds_for(SweepSource source) {
   kinds.vertices = source == SweepSource::VertexBuffer;
   kinds.texels = source == SweepSource::Texel;
   kinds.addresses = source == SweepSource::Address;
+  kinds.framebuffer = false;
   return kinds;
 }
 

@@ -89,6 +89,27 @@ void write_output(const std::string& path, const std::string& text) {
       path, [&](std::ostream& out) { out << text; }, false);
 }
 
+Table framebuffer_cache_table(std::vector<std::pair<std::string, TableCell>> parameters,
+                              const std::vector<FramebufferCacheSpec>& caches, const std::vector<WriteBackStats>& stats) {
+  Table table;
+  table.title = "Depth and colour caches (write-back; write misses allocate without reading)";
+  table.parameters = std::move(parameters);
+  table.columns = {{"source", "buffer", 0},         {"size_bytes", "size", 0},         {"line_bytes", "line", 0},
+                   {"assoc", "assoc (0=full)", 0},  {"policy", "policy", 0},           {"layout", "layout", 0},
+                   {"pixel_bytes", "pixel", 0},     {"reads", "reads", 0},             {"writes", "writes", 0},
+                   {"read_misses", "read misses", 0}, {"write_misses", "write misses", 0},
+                   {"bytes_read", "bytes read", 0}, {"bytes_written", "bytes written", 0}};
+  for (std::size_t i = 0; i < caches.size(); ++i) {
+    const FramebufferCacheSpec& c = caches[i];
+    const WriteBackStats& s = stats.at(i);
+    table.add_row({to_string(c.buffer), c.cache.size_bytes, c.cache.line_bytes,
+                   c.cache.assoc, to_string(c.cache.policy),
+                   layout_name(c.layout), c.layout.texel_bytes, s.reads, s.writes, s.read_misses, s.write_misses,
+                   s.bytes_read, s.bytes_written});
+  }
+  return table;
+}
+
 SweepSource default_source(const TraceSummary& s) {
   if (s.format == TraceFileFormat::Din) return SweepSource::Address;
   if (s.has_counts) {

@@ -25,6 +25,11 @@ Table byte_cache_table(const std::string& title, std::vector<std::pair<std::stri
 Table vertex_cache_table(const std::string& title, std::vector<std::pair<std::string, TableCell>> parameters,
                          const std::vector<VertexSweepRow>& rows);
 
+// Depth and colour cache rows: source, size_bytes, line_bytes, assoc, policy, layout, pixel_bytes,
+// reads, writes, read_misses, write_misses, bytes_read, bytes_written.
+Table framebuffer_cache_table(std::vector<std::pair<std::string, TableCell>> parameters,
+                              const std::vector<FramebufferCacheSpec>& caches, const std::vector<WriteBackStats>& stats);
+
 // Writes to the file atomically, or to stdout when path is empty.
 void write_output(const std::string& path, const std::string& text);
 

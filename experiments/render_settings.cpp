@@ -35,6 +35,8 @@ RenderOptions render_options_from(const SceneRenderFlags& flags) {
   else
     throw InputError("--lod-formula '" + flags.lod + "': expected lengths or max_component");
   options.pipeline.raster.traversal = parse_traversal(flags.raster);
+  options.pipeline.raster.depth_test = parse_depth_test(flags.depth_test);
+  options.pipeline.raster.hierarchical_z = flags.hiz;
   options.pipeline.cull = parse_cull_mode(flags.cull);
   options.pipeline.lighting.enabled = flags.lighting;
   options.pipeline.lighting.direction = glm::vec3(0.3f, 0.5f, 1.0f);
@@ -53,7 +55,9 @@ TraceMetadata render_trace_metadata(const SceneRenderFlags& flags, const Scene& 
                     {"wrap", flags.wrap},
                     {"lod", flags.lod},
                     {"cull", flags.cull},
-                    {"lighting", flags.lighting ? "on" : "off"}};
+                    {"lighting", flags.lighting ? "on" : "off"},
+                    {"depth_test", flags.depth_test},
+                    {"hiz", flags.hiz ? "on" : "off"}};
   return metadata;
 }
 

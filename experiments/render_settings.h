@@ -23,15 +23,18 @@ struct SceneRenderFlags {
   bool lighting = false;
   std::string order = "original";
   unsigned order_cache = 16;
+  std::string depth_test = "early";  // early | late (raster/rasterizer.h)
+  bool hiz = false;                  // hierarchical Z on 8x8 tiles
 };
 
 // The scene with the size override applied.
 Scene load_render_scene(const SceneRenderFlags& flags);
-// Sampler, traversal, culling, lighting from the flags (the LOD formula as given).
+// Sampler, traversal, depth test, hierarchical Z, culling, lighting from the flags (the LOD
+// formula as given).
 RenderOptions render_options_from(const SceneRenderFlags& flags);
 
 // What a trace of this render says about itself: scene, ordering, frame size, filter, texture
-// levels, and (in `extra`) raster, wrap, lod, cull and lighting. Every command that records a
+// levels, and (in `extra`) raster, wrap, lod, cull, lighting, depth test and hierarchical Z. Every command that records a
 // render's trace builds its metadata here, so all traces state the same settings.
 TraceMetadata render_trace_metadata(const SceneRenderFlags& flags, const Scene& scene, const TextureLevels& levels);
 

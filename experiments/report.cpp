@@ -89,6 +89,16 @@ void write_report(const ReportSpec& spec) {
     if (run.raster == "scanline") md << "![" << run.order << "](" << fs::relative(run.image_path, dir).string() << ") ";
   md << "\n\nOne frame per ordering (scanline traversal); the images are identical, the memory traffic is not.\n\n";
 
+  // 3. The whole frame: the four streams per ordering, side by side and stacked.
+  md << "## The whole frame: vertex, texture, depth and colour traffic\n\n"
+     << "Bytes between the GPU and its memory per frame and per pixel of the frame, each render through one\n"
+     << "live cache bank (the caches are stated in full below); depth and colour caches write back dirty\n"
+     << "lines, and the colour buffer is written, never read.\n\n";
+  write_frame_traffic_plot((dir / "plots" / "frame-traffic.png").string(), "Frame traffic per ordering: " + spec.scene,
+                           frame_traffic_rows(runs));
+  md << "![frame traffic](plots/frame-traffic.png)\n\n"
+     << render_table(frame_experiment_table(experiment, runs), TableFormat::Markdown) << "\n";
+
   // Plots: miss rate against size, a line per ordering and policy, per traversal and layout.
   for (const std::string& raster : experiment.rasters) {
     for (const LayoutSpec& layout : experiment.sweep.layouts) {

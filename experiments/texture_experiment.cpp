@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/units.h"
 #include "pipeline/scene_order.h"
+#include "traces/tee_sink.h"
 #include "traces/trace_writer.h"
 
 namespace rastrace {
@@ -92,7 +93,13 @@ std::vector<TextureRun> run_texture_experiment(const TextureExperiment& experime
         metadata.extra.insert(
             {{"texgroup_base", experiment.texgroup_base}, {"texgroup_regions", experiment.texgroup_regions}});
       TraceWriter writer(run.trace_path, metadata);
-      const RenderResult result = render_scene(scene, options, &writer);  // finishes the writer
+      FrameCaches caches = experiment.frame;
+      caches.vertex = experiment.vertex_cache;
+      LiveBankSink bank(frame_bank_config(caches), levels,
+                        FrameSize{static_cast<std::uint32_t>(scene.width), static_cast<std::uint32_t>(scene.height)});
+      TeeSink tee({&writer, &bank});
+      const RenderResult result = render_scene(scene, options, &tee);  // finishes the writer and the bank
+      run.traffic = measure_frame_traffic(caches, bank, result);
       run.fragments = result.raster.fragments;
       run.texel_accesses = result.raster.texel_reads;
       if (!experiment.image_dir.empty()) {
@@ -105,6 +112,26 @@ std::vector<TextureRun> run_texture_experiment(const TextureExperiment& experime
     }
   }
   return runs;
+}
+
+std::vector<FrameTrafficRow> frame_traffic_rows(const std::vector<TextureRun>& runs) {
+  std::vector<FrameTrafficRow> rows;
+  for (const TextureRun& run : runs) rows.push_back({run.order, run.raster, run.traffic});
+  return rows;
+}
+
+Table frame_experiment_table(const TextureExperiment& experiment, const std::vector<TextureRun>& runs) {
+  FrameCaches caches = experiment.frame;
+  caches.vertex = experiment.vertex_cache;
+  std::vector<std::pair<std::string, TableCell>> parameters = {{"scene", experiment.render.scene},
+                                                               {"filter", experiment.render.filter},
+                                                               {"cull", experiment.render.cull},
+                                                               {"depth_test", experiment.render.depth_test},
+                                                               {"hiz", experiment.render.hiz ? "on" : "off"}};
+  if (!experiment.render.size.empty()) parameters.emplace_back("size", experiment.render.size);
+  for (auto& parameter : frame_cache_parameters(caches)) parameters.push_back(std::move(parameter));
+  return frame_traffic_table("Frame traffic per ordering: " + experiment.render.scene, std::move(parameters),
+                             frame_traffic_rows(runs));
 }
 
 Table texture_experiment_table(const TextureExperiment& experiment, const std::vector<TextureRun>& runs) {

@@ -35,8 +35,15 @@ void Framebuffer::clear(const glm::vec4& colour, float depth) {
   std::uint8_t* out = colour_.data();
   for (std::size_t i = 0; i < colour_.size(); i += 4) std::memcpy(out + i, &packed, 4);
   std::fill(depth_.begin(), depth_.end(), depth);
+  clear_depth_ = depth;
   std::fill(write_count_.begin(), write_count_.end(), std::uint16_t{0});
   std::fill(centre_on_edge_.begin(), centre_on_edge_.end(), std::uint8_t{0});
+}
+
+std::uint64_t Framebuffer::covered_pixels() const {
+  std::uint64_t covered = 0;
+  for (const float z : depth_) covered += z < clear_depth_;
+  return covered;
 }
 
 namespace {

@@ -27,6 +27,9 @@ class Framebuffer {
   float* depth() { return depth_.data(); }
   const float* depth() const { return depth_.data(); }
   bool has_debug_planes() const { return !write_count_.empty(); }
+  // Pixels written since the last clear: those nearer than the cleared depth (a fragment passes
+  // GL_LESS only if nearer, and depths only decrease).
+  std::uint64_t covered_pixels() const;
   // Times a fragment passed the depth test and was written (debug planes only).
   std::uint16_t* write_count() { return write_count_.data(); }
   const std::uint16_t* write_count() const { return write_count_.data(); }
@@ -44,6 +47,7 @@ class Framebuffer {
  private:
   int width_;
   int height_;
+  float clear_depth_ = 1.0f;
   std::vector<std::uint8_t> colour_;
   std::vector<float> depth_;
   std::vector<std::uint16_t> write_count_;

@@ -1,6 +1,7 @@
 #include "raster/rasterizer.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "core/enum_names.h"
@@ -17,6 +18,14 @@ constexpr EnumName<Traversal> kTraversals[] = {
 Traversal parse_traversal(const std::string& text) { return parse_enum(text, kTraversals, "traversal order"); }
 
 const char* to_string(Traversal traversal) { return enum_to_string(traversal, kTraversals); }
+
+namespace {
+constexpr EnumName<DepthTest> kDepthTests[] = {{DepthTest::Early, "early"}, {DepthTest::Late, "late"}};
+}  // namespace
+
+DepthTest parse_depth_test(const std::string& text) { return parse_enum(text, kDepthTests, "depth test"); }
+
+const char* to_string(DepthTest test) { return enum_to_string(test, kDepthTests); }
 
 namespace {
 
@@ -48,7 +57,25 @@ struct Rasterizer::Setup {
 };
 
 Rasterizer::Rasterizer(Framebuffer& framebuffer, const RasterOptions& options, EventSink* sink)
-    : framebuffer_(framebuffer), options_(options), recorder_(sink) {}
+    : framebuffer_(framebuffer), options_(options), recorder_(sink), framebuffer_recorder_(sink) {
+  if (!options_.hierarchical_z) return;
+  hiz_columns_ = static_cast<std::size_t>((framebuffer_.width() + kTile - 1) / kTile);
+  const int rows = (framebuffer_.height() + kTile - 1) / kTile;
+  hiz_.resize(hiz_columns_ * static_cast<std::size_t>(rows));
+  for (int ty = 0; ty < rows; ++ty)
+    for (int tx = 0; tx < static_cast<int>(hiz_columns_); ++tx)
+      hiz_[static_cast<std::size_t>(ty) * hiz_columns_ + static_cast<std::size_t>(tx)] = tile_max_depth(tx, ty);
+}
+
+float Rasterizer::tile_max_depth(int tile_x, int tile_y) const {
+  const int width = framebuffer_.width();
+  const int x1 = std::min(width, (tile_x + 1) * kTile), y1 = std::min(framebuffer_.height(), (tile_y + 1) * kTile);
+  float farthest = 0.0f;
+  for (int y = tile_y * kTile; y < y1; ++y)
+    for (int x = tile_x * kTile; x < x1; ++x)
+      farthest = std::max(farthest, framebuffer_.depth()[static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x)]);
+  return farthest;
+}
 
 void Rasterizer::draw(const RasterVertex& va, const RasterVertex& vb, const RasterVertex& vc,
                       const TriangleState& state) {
@@ -147,6 +174,8 @@ void Rasterizer::traverse(const Setup& s, const TriangleState& state) {
   const Texture* texture = state.texture;
   const int tex_w = kTextured ? texture->levels[0].width : 1;
   const int tex_h = kTextured ? texture->levels[0].height : 1;
+  const bool late = options_.depth_test == DepthTest::Late;
+  const bool hierarchical_z = options_.hierarchical_z;
   TexelSite site;
   site.texture = state.texture_id;
   site.triangle = state.triangle;
@@ -190,6 +219,9 @@ void Rasterizer::traverse(const Setup& s, const TriangleState& state) {
     if (!mask) return;
     ++stats_.quads;
 
+    const unsigned covered = static_cast<unsigned>(std::popcount(mask));
+    stats_.fragments += covered;
+
     // Barycentric weights of vertices 1 and 2 at the four centres (helper pixels included).
     float l1[4], l2[4];
     for (int i = 0; i < 4; ++i) {
@@ -197,16 +229,41 @@ void Rasterizer::traverse(const Setup& s, const TriangleState& state) {
       l2[i] = static_cast<float>(pe[2][i]) * s.inv_area;
     }
     auto attribute = [&](int i, int j) { return s.base[j] + l1[i] * s.d1[j] + l2[i] * s.d2[j]; };
+    auto pixel = [&](int i) {
+      return static_cast<std::size_t>(qy + (i >> 1)) * width + static_cast<std::size_t>(qx + (i & 1));
+    };
     float z[4];
-    unsigned pass = 0;
-    for (int i = 0; i < 4; ++i) {
-      if (!(mask >> i & 1u)) continue;
-      ++stats_.fragments;
-      const std::size_t p = static_cast<std::size_t>(qy + (i >> 1)) * width + static_cast<std::size_t>(qx + (i & 1));
-      z[i] = attribute(i, 7);
-      if (z[i] < depth[p]) pass |= 1u << i;
+    for (int i = 0; i < 4; ++i) z[i] = attribute(i, 7);
+    // Hierarchical Z: no covered fragment can pass if none is nearer than the farthest depth of
+    // the quad's 8x8 tile; the quad is rejected without reading the depth buffer.
+    const std::size_t tile = hierarchical_z ? static_cast<std::size_t>(qy / kTile) * hiz_columns_ +
+                                                  static_cast<std::size_t>(qx / kTile)
+                                            : 0;
+    if (hierarchical_z) {
+      float nearest = 2.0f;
+      for (int i = 0; i < 4; ++i)
+        if (mask >> i & 1u) nearest = std::min(nearest, z[i]);
+      if (nearest >= hiz_[tile]) {
+        ++stats_.quads_rejected_hiz;
+        stats_.fragments_rejected_early += covered;
+        return;
+      }
     }
-    if (!pass) return;
+    auto depth_test = [&] {
+      unsigned pass = 0;
+      for (int i = 0; i < 4; ++i)
+        if ((mask >> i & 1u) && z[i] < depth[pixel(i)]) pass |= 1u << i;
+      framebuffer_recorder_.record(FramebufferOp::DepthRead, qx, qy, mask, state.triangle);
+      return pass;
+    };
+    // Early: the test runs before shading and texturing, so rejected fragments read no texel.
+    // Late: every covered fragment is shaded and textured, then tested.
+    unsigned pass = late ? 0u : depth_test();
+    if (!late) {
+      stats_.fragments_rejected_early += covered - static_cast<unsigned>(std::popcount(pass));
+      if (!pass) return;
+    }
+    const unsigned shade = late ? mask : pass;
     float q[4];
     for (int i = 0; i < 4; ++i) q[i] = attribute(i, 0);
 
@@ -220,23 +277,35 @@ void Rasterizer::traverse(const Setup& s, const TriangleState& state) {
       }
       lambda = compute_lod(sampler, tex_w, tex_h, u[1] - u[0], v[1] - v[0], u[2] - u[0], v[2] - v[0]);
     }
+    glm::vec4 shaded[4] = {};
+    for (int i = 0; i < 4; ++i) {
+      if (!(shade >> i & 1u)) continue;
+      ++stats_.fragments_shaded;
+      const float w = 1.0f / q[i];
+      shaded[i] = glm::vec4(attribute(i, 3) * w, attribute(i, 4) * w, attribute(i, 5) * w, attribute(i, 6) * w);
+      if constexpr (kTextured) {
+        site.pixel_x = static_cast<std::uint16_t>(qx + (i & 1));
+        site.pixel_y = static_cast<std::uint16_t>(qy + (i >> 1));
+        shaded[i] *= sample_texture(*texture, sampler, u[i], v[i], lambda, recorder_, site);
+      }
+    }
+    if (late) pass = depth_test();
+    if (!pass) return;
+    framebuffer_recorder_.record(FramebufferOp::DepthWrite, qx, qy, pass, state.triangle);
+    framebuffer_recorder_.record(FramebufferOp::ColourWrite, qx, qy, pass, state.triangle);
+    bool tile_maximum_written = false;
     for (int i = 0; i < 4; ++i) {
       if (!(pass >> i & 1u)) continue;
       ++stats_.fragments_passed;
-      const int x = qx + (i & 1), y = qy + (i >> 1);
-      const std::size_t p = static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x);
-      const float w = 1.0f / q[i];
-      glm::vec4 c(attribute(i, 3) * w, attribute(i, 4) * w, attribute(i, 5) * w, attribute(i, 6) * w);
-      if constexpr (kTextured) {
-        site.pixel_x = static_cast<std::uint16_t>(x);
-        site.pixel_y = static_cast<std::uint16_t>(y);
-        c *= sample_texture(*texture, sampler, u[i], v[i], lambda, recorder_, site);
-      }
+      const std::size_t p = pixel(i);
+      if (hierarchical_z && depth[p] >= hiz_[tile]) tile_maximum_written = true;
       depth[p] = z[i];
       std::uint8_t* out = colour + p * 4;
-      for (int ch = 0; ch < 4; ++ch) out[ch] = static_cast<std::uint8_t>(std::clamp(c[ch], 0.0f, 1.0f) * 255.0f + 0.5f);
+      for (int ch = 0; ch < 4; ++ch)
+        out[ch] = static_cast<std::uint8_t>(std::clamp(shaded[i][ch], 0.0f, 1.0f) * 255.0f + 0.5f);
       if constexpr (kDebug) ++framebuffer_.write_count()[p];
     }
+    if (tile_maximum_written) hiz_[tile] = tile_max_depth(static_cast<int>(tile % hiz_columns_), static_cast<int>(tile / hiz_columns_));
   };
 
   std::int64_t row[3];

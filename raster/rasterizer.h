@@ -11,8 +11,13 @@
 // or a *left* edge (the triangle to its right). A centre on an edge shared by two triangles is
 // therefore drawn exactly once, and a centre on a shared vertex exactly once.
 //
-// Texel reads happen only for fragments that pass the depth test (early Z, as hardware does);
-// the level of detail is computed once per 2x2 quad from the quad's differences (right minus
+// The depth test runs early by default (before shading and texturing: a rejected fragment reads no
+// texel, as GPUs do for opaque geometry) or late (every covered fragment is shaded, then tested);
+// the image is the same. An optional hierarchical Z keeps the farthest depth of each 8x8-pixel tile
+// and rejects a 2x2 quad none of whose covered fragments is nearer, without reading depth.
+// Framebuffer events (traces/events.h), per quad: the depth-test read of its covered pixels, the
+// depth and colour writes of those that passed, recorded only for a sink that wants them.
+// The level of detail is computed once per 2x2 quad from the quad's differences (right minus
 // left along the top row, bottom minus top along the left column), helper pixels included.
 #pragma once
 
@@ -23,6 +28,7 @@
 #include <glm/vec4.hpp>
 
 #include "raster/framebuffer.h"
+#include "raster/framebuffer_recorder.h"
 #include "raster/sampler.h"
 #include "raster/texel_recorder.h"
 #include "traces/sink.h"
@@ -53,9 +59,19 @@ struct TriangleState {
   std::uint32_t triangle = 0;        // the drawn triangle's number in the frame, in events
 };
 
+enum class DepthTest : std::uint8_t {
+  Early,  // before shading and texturing (the default)
+  Late,   // after: every covered fragment is shaded and textured
+};
+// "early" or "late"; throws InputError otherwise.
+DepthTest parse_depth_test(const std::string& text);
+const char* to_string(DepthTest test);
+
 struct RasterOptions {
   Traversal traversal = Traversal::Scanline;
   SamplerState sampler;
+  DepthTest depth_test = DepthTest::Early;
+  bool hierarchical_z = false;  // reject quads against each 8x8 tile's farthest depth
 };
 
 struct RasterStats {
@@ -63,6 +79,9 @@ struct RasterStats {
   std::uint64_t quads = 0;             // 2x2 quads with at least one covered pixel
   std::uint64_t fragments = 0;         // covered pixels
   std::uint64_t fragments_passed = 0;  // covered pixels that passed the depth test (written)
+  std::uint64_t fragments_shaded = 0;  // shaded and textured: those passed (early test), all (late)
+  std::uint64_t fragments_rejected_early = 0;  // by the early test or hierarchical Z, before shading
+  std::uint64_t quads_rejected_hiz = 0;        // by hierarchical Z, without a depth read
   std::uint64_t texel_reads = 0;
 };
 
@@ -75,7 +94,10 @@ class Rasterizer {
   // (the pipeline's guard band keeps them far inside).
   void draw(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c, const TriangleState& state);
   // Hands buffered texel events to the sink (call at the end of a draw).
-  void flush() { recorder_.flush(); }
+  void flush() {
+    recorder_.flush();
+    framebuffer_recorder_.flush();
+  }
 
   RasterStats stats() const {
     RasterStats s = stats_;
@@ -88,11 +110,16 @@ class Rasterizer {
   struct Setup;
   template <bool kTextured, bool kDebug>
   void traverse(const Setup& setup, const TriangleState& state);
+  // The farthest depth stored in an 8x8 tile (hierarchical Z).
+  float tile_max_depth(int tile_x, int tile_y) const;
 
   Framebuffer& framebuffer_;
   RasterOptions options_;
   TexelRecorder recorder_;
+  FramebufferRecorder framebuffer_recorder_;
   RasterStats stats_;
+  std::vector<float> hiz_;  // per 8x8 tile, row-major: the farthest depth (hierarchical Z only)
+  std::size_t hiz_columns_ = 0;
 };
 
 }  // namespace rastrace

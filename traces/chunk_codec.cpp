@@ -11,6 +11,8 @@ const char* to_string(RecordKind kind) {
       return "vertex";
     case RecordKind::Texel:
       return "texel";
+    case RecordKind::Framebuffer:
+      return "framebuffer";
     default:
       return "address";
   }
@@ -293,6 +295,16 @@ void encode_address_records(std::span<const AddressAccess> a, std::string& raw) 
   put_column(raw, a.size(), [&](std::size_t i) { return std::uint64_t{a[i].label}; });
 }
 
+void encode_framebuffer_records(std::span<const FramebufferAccess> f, std::string& raw) {
+  raw.clear();
+  const std::size_t n = f.size();
+  put_column(raw, n, [&](std::size_t i) { return std::uint64_t{f[i].x}; });
+  put_column(raw, n, [&](std::size_t i) { return std::uint64_t{f[i].y}; });
+  put_column(raw, n, [&](std::size_t i) { return std::uint64_t{static_cast<std::uint8_t>(f[i].op)}; });
+  put_column(raw, n, [&](std::size_t i) { return std::uint64_t{f[i].mask}; });
+  put_column(raw, n, [&](std::size_t i) { return std::uint64_t{f[i].triangle}; });
+}
+
 std::string decode_vertex_records(std::span<const std::uint8_t> raw, std::uint32_t n, DrawInfo& draw,
                                   std::vector<VertexFetch>& out) {
   Cursor c{raw.data(), raw.data() + raw.size(), {}};
@@ -364,6 +376,43 @@ std::string decode_texel_records(std::span<const std::uint8_t> raw, std::uint32_
   for (int k = 0; k < opened; ++k)
     if (std::string error = column_error(col[k]); !error.empty()) return error;
   if (!all) return c.error;
+  if (c.p != c.end) return "unexpected bytes after the records";
+  return "";
+}
+
+std::string decode_framebuffer_records(std::span<const std::uint8_t> raw, std::uint32_t n,
+                                       std::vector<FramebufferAccess>& out) {
+  Cursor c{raw.data(), raw.data() + raw.size(), {}};
+  out.resize(n);
+  FramebufferAccess* f = out.data();
+  Column col[5];
+  // Range checks OR every value of a column, so limits are all-ones masks; the operation's
+  // exact range (0..kFramebufferOps-1) is checked record by record below.
+  const std::uint64_t limits[5] = {0xFFFFu, 0xFFFFu, 0x3u, 0xFu, 0xFFFFFFFFu};
+  const char* names[5] = {"x", "y", "operation", "mask", "triangle"};
+  for (int k = 0; k < 5; ++k)
+    if (!open_column(c, n, limits[k], names[k], col[k])) return c.error;
+  if (n > 0) {
+    f[0].x = static_cast<std::uint16_t>(col[0].value);
+    f[0].y = static_cast<std::uint16_t>(col[1].value);
+    f[0].op = static_cast<FramebufferOp>(static_cast<std::uint8_t>(col[2].value));
+    f[0].mask = static_cast<std::uint8_t>(col[3].value);
+    f[0].triangle = static_cast<std::uint32_t>(col[4].value);
+  }
+  for (std::size_t begin = 1; begin < n; begin += kBlock) {
+    const std::size_t end = std::min<std::size_t>(n, begin + kBlock);
+    decode_range<FramebufferAccess, std::uint16_t, &FramebufferAccess::x>(col[0], f, begin, end);
+    decode_range<FramebufferAccess, std::uint16_t, &FramebufferAccess::y>(col[1], f, begin, end);
+    decode_range<FramebufferAccess, FramebufferOp, &FramebufferAccess::op>(col[2], f, begin, end);
+    decode_range<FramebufferAccess, std::uint8_t, &FramebufferAccess::mask>(col[3], f, begin, end);
+    decode_range<FramebufferAccess, std::uint32_t, &FramebufferAccess::triangle>(col[4], f, begin, end);
+  }
+  for (int k = 0; k < 5; ++k)
+    if (std::string error = column_error(col[k]); !error.empty()) return error;
+  for (std::size_t i = 0; i < n; ++i)
+    if (static_cast<std::uint8_t>(f[i].op) >= kFramebufferOps)
+      return "operation " + std::to_string(static_cast<int>(f[i].op)) + " in record " + std::to_string(i) +
+             ": expected 0 (depth read), 1 (depth write) or 2 (colour write)";
   if (c.p != c.end) return "unexpected bytes after the records";
   return "";
 }

@@ -18,13 +18,15 @@
 
 namespace rastrace {
 
-enum class RecordKind : std::uint8_t { Vertex = 1, Texel = 2, Address = 3 };
+enum class RecordKind : std::uint8_t { Vertex = 1, Texel = 2, Address = 3, Framebuffer = 4 };
 inline constexpr std::uint8_t kStripWithoutRestart = 0x80;
 const char* to_string(RecordKind kind);
 
 void encode_vertex_records(const DrawInfo& draw, std::span<const VertexFetch> fetches, std::string& raw);
 void encode_texel_records(std::span<const TexelAccess> texels, std::string& raw);
 void encode_address_records(std::span<const AddressAccess> addresses, std::string& raw);
+// Columns x, y, operation, mask, triangle.
+void encode_framebuffer_records(std::span<const FramebufferAccess> accesses, std::string& raw);
 
 // Decoders append nothing: they resize `out` to `records`. They return an empty string on
 // success, or what was wrong (the caller names the file and chunk).
@@ -34,5 +36,7 @@ std::string decode_texel_records(std::span<const std::uint8_t> raw, std::uint32_
                                  std::vector<TexelAccess>& out);
 std::string decode_address_records(std::span<const std::uint8_t> raw, std::uint32_t records,
                                    std::vector<AddressAccess>& out);
+std::string decode_framebuffer_records(std::span<const std::uint8_t> raw, std::uint32_t records,
+                                       std::vector<FramebufferAccess>& out);
 
 }  // namespace rastrace

@@ -36,6 +36,23 @@ struct TexelAccess {
   std::uint32_t triangle = 0;  // the drawn triangle's number within the frame
 };
 
+// A framebuffer access by the fragments of one 2x2 quad. Logical, like texels: pixel coordinates,
+// never byte addresses; the depth and colour buffer layouts are applied at replay.
+enum class FramebufferOp : std::uint8_t {
+  DepthRead = 0,    // the depth test reads the stored depths
+  DepthWrite = 1,   // the fragments that passed write their depths
+  ColourWrite = 2,  // and their colours
+};
+inline constexpr std::uint8_t kFramebufferOps = 3;
+
+struct FramebufferAccess {
+  std::uint16_t x = 0;  // the quad's top-left pixel (even coordinates)
+  std::uint16_t y = 0;
+  FramebufferOp op = FramebufferOp::DepthRead;
+  std::uint8_t mask = 0;  // the pixels concerned: bit 0 (x, y), 1 (x+1, y), 2 (x, y+1), 3 (x+1, y+1)
+  std::uint32_t triangle = 0;  // the drawn triangle's number within the frame
+};
+
 // One byte-address access from a foreign trace (Dinero IV din: label 0 read, 1 write, 2
 // instruction fetch). rastrace's own traces record logical ids instead.
 struct AddressAccess {

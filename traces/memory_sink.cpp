@@ -15,4 +15,8 @@ void MemorySink::texel_accesses(std::span<const TexelAccess> batch) {
   texels.insert(texels.end(), batch.begin(), batch.end());
 }
 
+void MemorySink::framebuffer_accesses(std::span<const FramebufferAccess> batch) {
+  framebuffer.insert(framebuffer.end(), batch.begin(), batch.end());
+}
+
 }  // namespace rastrace

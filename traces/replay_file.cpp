@@ -32,6 +32,7 @@ TraceSummary summarize_trace(const std::string& path) {
     s.vertices = reader.records(RecordKind::Vertex);
     s.texels = reader.records(RecordKind::Texel);
     s.addresses = reader.records(RecordKind::Address);
+    s.framebuffer = reader.records(RecordKind::Framebuffer);
   } else if (s.format == TraceFileFormat::Csv) {
     s.metadata = read_csv_metadata(path);
   }
@@ -62,6 +63,11 @@ class FilterSink final : public EventSink {
     if (kinds_.addresses) inner_.address_accesses(a);
     advance(a.size());
   }
+  void framebuffer_accesses(std::span<const FramebufferAccess> a) override {
+    if (kinds_.framebuffer) inner_.framebuffer_accesses(a);
+    advance(a.size());
+  }
+  bool wants_framebuffer_events() const override { return kinds_.framebuffer && inner_.wants_framebuffer_events(); }
   void finish() override { inner_.finish(); }
 
  private:

@@ -21,7 +21,7 @@ struct TraceSummary {
   TraceMetadata metadata;
   // Record counts; for text formats these are known only after a pass (has_counts false).
   bool has_counts = false;
-  std::uint64_t vertices = 0, texels = 0, addresses = 0;
+  std::uint64_t vertices = 0, texels = 0, addresses = 0, framebuffer = 0;
 };
 
 // Reads the header (container) or first line (CSV); din has no metadata.

@@ -14,6 +14,11 @@ class EventSink {
   virtual void begin_draw(const DrawInfo& /*draw*/) {}
   virtual void vertex_fetches(std::span<const VertexFetch> /*fetches*/) {}
   virtual void texel_accesses(std::span<const TexelAccess> /*accesses*/) {}
+  // Depth-test reads, depth writes and colour writes, per 2x2 quad.
+  virtual void framebuffer_accesses(std::span<const FramebufferAccess> /*accesses*/) {}
+  // Whether the rasterizer should record framebuffer events for this sink at all: a sink that
+  // uses them says so, and a frame rendered for other sinks pays nothing for them.
+  virtual bool wants_framebuffer_events() const { return false; }
   virtual void end_draw() {}
   // Byte addresses from imported (din) traces; the renderer never emits these.
   virtual void address_accesses(std::span<const AddressAccess> /*accesses*/) {}

@@ -11,6 +11,14 @@ void TeeSink::vertex_fetches(std::span<const VertexFetch> fetches) {
 void TeeSink::texel_accesses(std::span<const TexelAccess> accesses) {
   for (EventSink* sink : sinks_) sink->texel_accesses(accesses);
 }
+void TeeSink::framebuffer_accesses(std::span<const FramebufferAccess> accesses) {
+  for (EventSink* sink : sinks_) sink->framebuffer_accesses(accesses);
+}
+bool TeeSink::wants_framebuffer_events() const {
+  for (const EventSink* sink : sinks_)
+    if (sink->wants_framebuffer_events()) return true;
+  return false;
+}
 void TeeSink::end_draw() {
   for (EventSink* sink : sinks_) sink->end_draw();
 }

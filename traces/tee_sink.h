@@ -17,6 +17,9 @@ class TeeSink final : public EventSink {
   void begin_draw(const DrawInfo& draw) override;
   void vertex_fetches(std::span<const VertexFetch> fetches) override;
   void texel_accesses(std::span<const TexelAccess> accesses) override;
+  void framebuffer_accesses(std::span<const FramebufferAccess> accesses) override;
+  // True when any of the sinks wants them (each is then handed every framebuffer event).
+  bool wants_framebuffer_events() const override;
   void end_draw() override;
   void address_accesses(std::span<const AddressAccess> accesses) override;
   void finish() override;

@@ -1,6 +1,8 @@
 #include "traces/text_formats.h"
 
+#include <algorithm>
 #include <charconv>
+#include <iterator>
 #include <fstream>
 #include <vector>
 
@@ -11,7 +13,11 @@ namespace rastrace {
 namespace {
 
 constexpr const char* kCsvHeader =
+    "event,draw,type,restart,vertex,primitive_start,texture,level,x,y,pixel_x,pixel_y,triangle,address,label,mask";
+// Files exported before framebuffer events existed: no mask column.
+constexpr const char* kCsvHeaderVersion1 =
     "event,draw,type,restart,vertex,primitive_start,texture,level,x,y,pixel_x,pixel_y,triangle,address,label";
+constexpr const char* kFramebufferEvents[kFramebufferOps] = {"depth_read", "depth_write", "colour_write"};
 constexpr const char* kMetadataPrefix = "# rastrace metadata: ";
 constexpr std::size_t kBatch = 1 << 14;
 
@@ -21,24 +27,29 @@ class CsvExportSink final : public EventSink {
   void begin_draw(const DrawInfo& d) override {
     out_ << "begin_draw," << d.draw << ',' << static_cast<int>(d.type) << ',';
     if (d.type == PrimitiveType::TriangleStrip && d.restart_index) out_ << *d.restart_index;
-    out_ << ",,,,,,,,,,,\n";
+    out_ << ",,,,,,,,,,,,\n";
   }
-  void end_draw() override { out_ << "end_draw,,,,,,,,,,,,,,\n"; }
+  void end_draw() override { out_ << "end_draw,,,,,,,,,,,,,,,\n"; }
   void vertex_fetches(std::span<const VertexFetch> fetches) override {
     for (const VertexFetch& f : fetches)
-      out_ << "vertex,,,," << f.vertex << ',' << (f.primitive_start ? 1 : 0) << ",,,,,,,,,\n";
+      out_ << "vertex,,,," << f.vertex << ',' << (f.primitive_start ? 1 : 0) << ",,,,,,,,,,\n";
   }
   void texel_accesses(std::span<const TexelAccess> texels) override {
     for (const TexelAccess& t : texels)
       out_ << "texel,,,,,," << t.texture << ',' << static_cast<int>(t.level) << ',' << t.x << ',' << t.y << ','
-           << t.pixel_x << ',' << t.pixel_y << ',' << t.triangle << ",,\n";
+           << t.pixel_x << ',' << t.pixel_y << ',' << t.triangle << ",,,\n";
+  }
+  void framebuffer_accesses(std::span<const FramebufferAccess> accesses) override {
+    for (const FramebufferAccess& a : accesses)
+      out_ << kFramebufferEvents[static_cast<std::uint8_t>(a.op)] << ",,,,,,,,,," << a.x << ',' << a.y << ','
+           << a.triangle << ",,," << static_cast<int>(a.mask) << '\n';
   }
   void address_accesses(std::span<const AddressAccess> addresses) override {
     char hex[32];
     for (const AddressAccess& a : addresses) {
       const auto end = std::to_chars(hex, hex + sizeof(hex), a.address, 16).ptr;
       out_ << "address,,,,,,,,,,,,,0x" << std::string_view(hex, static_cast<std::size_t>(end - hex)) << ','
-           << static_cast<int>(a.label) << '\n';
+           << static_cast<int>(a.label) << ",\n";
     }
   }
 
@@ -95,14 +106,18 @@ void import_csv(const std::string& path, EventSink& sink) {
   std::vector<VertexFetch> vertices;
   std::vector<TexelAccess> texels;
   std::vector<AddressAccess> addresses;
+  std::vector<FramebufferAccess> framebuffer;
   const auto flush = [&] {
     if (!vertices.empty()) sink.vertex_fetches(vertices);
     if (!texels.empty()) sink.texel_accesses(texels);
     if (!addresses.empty()) sink.address_accesses(addresses);
+    if (!framebuffer.empty()) sink.framebuffer_accesses(framebuffer);
     vertices.clear();
     texels.clear();
     addresses.clear();
+    framebuffer.clear();
   };
+  std::size_t columns = 16;
   std::string text;
   std::uint64_t line = 0;
   bool header_seen = false;
@@ -111,13 +126,18 @@ void import_csv(const std::string& path, EventSink& sink) {
     if (!text.empty() && text.back() == '\r') text.pop_back();
     if (text.empty() || text[0] == '#') continue;
     if (!header_seen) {
-      if (text != kCsvHeader) throw_at_line(path, line, std::string("expected the header line '") + kCsvHeader + "'");
+      if (text == kCsvHeaderVersion1)
+        columns = 15;
+      else if (text != kCsvHeader)
+        throw_at_line(path, line, std::string("expected the header line '") + kCsvHeader + "'");
       header_seen = true;
       continue;
     }
     const auto f = fields(text);
-    if (f.size() != 15)
-      throw_at_line(path, line, "expected 15 comma-separated fields, found " + std::to_string(f.size()));
+    if (f.size() != columns)
+      throw_at_line(path, line,
+                    "expected " + std::to_string(columns) + " comma-separated fields, found " + std::to_string(f.size()));
+    const auto* op = std::find(std::begin(kFramebufferEvents), std::end(kFramebufferEvents), f[0]);
     if (f[0] == "begin_draw") {
       flush();
       DrawInfo d;
@@ -135,13 +155,24 @@ void import_csv(const std::string& path, EventSink& sink) {
     } else if (f[0] == "end_draw") {
       flush();
       sink.end_draw();
+    } else if (op != std::end(kFramebufferEvents) && columns == 16) {
+      if (!vertices.empty() || !texels.empty() || !addresses.empty()) flush();
+      FramebufferAccess a;
+      a.op = static_cast<FramebufferOp>(op - std::begin(kFramebufferEvents));
+      a.x = number<std::uint16_t>(f[10], path, line, "pixel_x");
+      a.y = number<std::uint16_t>(f[11], path, line, "pixel_y");
+      a.triangle = number<std::uint32_t>(f[12], path, line, "triangle");
+      const unsigned mask = number<unsigned>(f[15], path, line, "mask");
+      if (mask > 15) throw_at_line(path, line, "column mask: expected 0..15 (the pixels of a 2x2 quad)");
+      a.mask = static_cast<std::uint8_t>(mask);
+      framebuffer.push_back(a);
     } else if (f[0] == "vertex") {
-      if (!texels.empty() || !addresses.empty()) flush();
+      if (!texels.empty() || !addresses.empty() || !framebuffer.empty()) flush();
       const unsigned start = number<unsigned>(f[5], path, line, "primitive_start");
       if (start > 1) throw_at_line(path, line, "column primitive_start: expected 0 or 1");
       vertices.push_back({number<std::uint32_t>(f[4], path, line, "vertex"), start == 1});
     } else if (f[0] == "texel") {
-      if (!vertices.empty() || !addresses.empty()) flush();
+      if (!vertices.empty() || !addresses.empty() || !framebuffer.empty()) flush();
       TexelAccess t;
       t.texture = number<std::uint32_t>(f[6], path, line, "texture");
       t.level = number<std::uint8_t>(f[7], path, line, "level");
@@ -152,15 +183,16 @@ void import_csv(const std::string& path, EventSink& sink) {
       t.triangle = number<std::uint32_t>(f[12], path, line, "triangle");
       texels.push_back(t);
     } else if (f[0] == "address") {
-      if (!vertices.empty() || !texels.empty()) flush();
+      if (!vertices.empty() || !texels.empty() || !framebuffer.empty()) flush();
       addresses.push_back(
           {number<std::uint64_t>(f[13], path, line, "address", 16), number<std::uint8_t>(f[14], path, line, "label")});
     } else {
       throw_at_line(
           path, line,
-          "unknown event '" + std::string(f[0]) + "': expected begin_draw, end_draw, vertex, texel or address");
+          "unknown event '" + std::string(f[0]) +
+              "': expected begin_draw, end_draw, vertex, texel, address, depth_read, depth_write or colour_write");
     }
-    if (vertices.size() + texels.size() + addresses.size() >= kBatch) flush();
+    if (vertices.size() + texels.size() + addresses.size() + framebuffer.size() >= kBatch) flush();
   }
   if (!header_seen) throw_in_file(path, std::string("no CSV header line: expected '") + kCsvHeader + "'");
   flush();

@@ -1,8 +1,8 @@
-// The rastrace trace container, version 1 (all integers little endian):
+// The rastrace trace container, version 2 (all integers little endian):
 //
 //   header   "RASTRACE" | u32 version | u32 metadata bytes | metadata JSON | u32 CRC32C(JSON)
 //   chunks   32-byte chunk header | payload (zstd frame of the encoded records, chunk_codec.h)
-//              u32 "CHNK" | u8 kind (1 vertex, 2 texel, 3 address) | u8 flags (1 starts a draw,
+//              u32 "CHNK" | u8 kind (1 vertex, 2 texel, 3 address, 4 framebuffer) | u8 flags (1 starts a draw,
 //              2 ends it) | u16 0 | u32 records | u32 payload bytes | u32 raw bytes |
 //              u64 first record (number of the first record among the file's records of this kind)
 //              | u32 CRC32C over the 28 bytes before it and the payload
@@ -10,8 +10,12 @@
 //            u32 records, u8 kind, 3 zero bytes
 //   footer   u64 index offset | u32 CRC32C(index) | u32 0 | "RTRCEND1"
 //
-// A vertex chunk belongs to one draw; a draw's fetches span one or more chunks. Texel and address
-// chunks hold up to 64 Ki records each. The index at the end lets a reader seek to any chunk and
+// A vertex chunk belongs to one draw; a draw's fetches span one or more chunks. Texel, address and
+// framebuffer chunks hold up to 64 Ki records each.
+//
+// Versions: 1 had vertex, texel and address chunks; 2 adds framebuffer chunks (depth-test reads,
+// depth writes and colour writes per 2x2 quad, chunk_codec.h) and changes nothing else, so a
+// reader of version 2 reads version 1 files as they are. The index at the end lets a reader seek to any chunk and
 // know every count before reading; a file without its footer was not finished (truncated).
 #pragma once
 
@@ -23,7 +27,8 @@ namespace rastrace {
 
 inline constexpr char kTraceMagic[8] = {'R', 'A', 'S', 'T', 'R', 'A', 'C', 'E'};
 inline constexpr char kTraceEndMagic[8] = {'R', 'T', 'R', 'C', 'E', 'N', 'D', '1'};
-inline constexpr std::uint32_t kTraceVersion = 1;
+inline constexpr std::uint32_t kTraceVersion = 2;        // what the writer writes
+inline constexpr std::uint32_t kOldestTraceVersion = 1;  // the oldest the reader reads
 inline constexpr std::uint32_t kChunkTag = 0x4B4E4843u;  // "CHNK"
 inline constexpr std::uint32_t kIndexTag = 0x58444E49u;  // "INDX"
 inline constexpr std::uint32_t kChunkHeaderBytes = 32;

@@ -114,6 +114,9 @@ void load_chunk(const TraceLayout& file, ChunkSource& src, std::size_t i, Decode
     case RecordKind::Texel:
       error = decode_texel_records(src.raw, records, out.texels);
       break;
+    case RecordKind::Framebuffer:
+      error = decode_framebuffer_records(src.raw, records, out.framebuffer);
+      break;
     default:
       error = decode_address_records(src.raw, records, out.addresses);
       break;
@@ -158,7 +161,7 @@ struct TraceReader::ReadState {
   std::size_t held = kNone;
   bool enabled = read_ahead_by_default();
   bool broken = false;  // the thread could not start: read in the caller only
-  bool wanted[4] = {false, true, true, true};
+  bool wanted[5] = {false, true, true, true, true};
   std::size_t last = kNone;    // the chunk read last
   std::size_t cursor = kNone;  // the next chunk to read ahead, kNone: none
   bool stop = false;
@@ -263,10 +266,13 @@ TraceReader::TraceReader(const std::string& path) : path_(path) {
   if (in_.gcount() < 16)
     throw_at_byte(path, static_cast<std::uint64_t>(in_.gcount()), "truncated header: expected 16 bytes");
   const std::uint32_t version = load<std::uint32_t>(fixed + 8);
-  if (version != kTraceVersion)
+  if (version < kOldestTraceVersion || version > kTraceVersion)
     throw_at_byte(path, 8,
-                  "unknown trace version " + std::to_string(version) + ": this rastrace reads version " +
-                      std::to_string(kTraceVersion));
+                  "unknown trace version " + std::to_string(version) + ": this rastrace reads versions " +
+                      std::to_string(kOldestTraceVersion) + " to " + std::to_string(kTraceVersion));
+  version_ = version;
+  // Version 1 knew vertex, texel and address chunks; version 2 added framebuffer chunks.
+  const std::uint8_t last_kind = version == 1 ? 3 : 4;
   const std::uint32_t json_bytes = load<std::uint32_t>(fixed + 12);
   const std::uint64_t header_end = 16 + std::uint64_t{json_bytes} + 4;
   if (header_end > file_bytes_)
@@ -312,7 +318,7 @@ TraceReader::TraceReader(const std::string& path) : path_(path) {
     c.first_record = load<std::uint64_t>(e + 8);
     c.records = load<std::uint32_t>(e + 16);
     const std::uint8_t kind = e[20];
-    if (kind < 1 || kind > 3 || c.records > kMaxChunkRecords || c.offset < previous_end ||
+    if (kind < 1 || kind > last_kind || c.records > kMaxChunkRecords || c.offset < previous_end ||
         c.offset + kChunkHeaderBytes > index_offset_)
       throw_at_byte(path, index_offset_ + 16 + i * 24, "chunk index entry " + std::to_string(i) + " is invalid");
     c.kind = static_cast<RecordKind>(kind);
@@ -364,6 +370,7 @@ void TraceReader::set_read_ahead_kinds(ReplayKinds kinds) {
   s.wanted[static_cast<int>(RecordKind::Vertex)] = kinds.vertices;
   s.wanted[static_cast<int>(RecordKind::Texel)] = kinds.texels;
   s.wanted[static_cast<int>(RecordKind::Address)] = kinds.addresses;
+  s.wanted[static_cast<int>(RecordKind::Framebuffer)] = kinds.framebuffer;
   s.drop_read_ahead();
 }
 
@@ -447,7 +454,8 @@ void replay_trace(TraceReader& reader, EventSink& sink, ReplayKinds kinds, Progr
     const ChunkInfo& info = reader.chunks()[i];
     const bool wanted = (info.kind == RecordKind::Vertex && kinds.vertices) ||
                         (info.kind == RecordKind::Texel && kinds.texels) ||
-                        (info.kind == RecordKind::Address && kinds.addresses);
+                        (info.kind == RecordKind::Address && kinds.addresses) ||
+                        (info.kind == RecordKind::Framebuffer && kinds.framebuffer);
     if (!wanted) continue;
     const DecodedChunk& chunk = reader.read_chunk(i);
     switch (chunk.kind) {
@@ -458,6 +466,9 @@ void replay_trace(TraceReader& reader, EventSink& sink, ReplayKinds kinds, Progr
         break;
       case RecordKind::Texel:
         sink.texel_accesses(chunk.texels);
+        break;
+      case RecordKind::Framebuffer:
+        sink.framebuffer_accesses(chunk.framebuffer);
         break;
       default:
         sink.address_accesses(chunk.addresses);

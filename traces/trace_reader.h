@@ -31,6 +31,7 @@ struct ReplayKinds {
   bool vertices = true;
   bool texels = true;
   bool addresses = true;
+  bool framebuffer = true;
 };
 
 // Only the vector of the chunk's kind holds this chunk's records; the others are stale.
@@ -42,6 +43,7 @@ struct DecodedChunk {
   std::vector<VertexFetch> vertices;
   std::vector<TexelAccess> texels;
   std::vector<AddressAccess> addresses;
+  std::vector<FramebufferAccess> framebuffer;
 };
 
 class TraceReader {
@@ -55,6 +57,8 @@ class TraceReader {
   const std::vector<ChunkInfo>& chunks() const { return chunks_; }
   std::uint64_t records(RecordKind kind) const { return counts_[static_cast<int>(kind)]; }
   std::uint64_t file_bytes() const { return file_bytes_; }
+  // The container version the file was written in (trace_format.h).
+  std::uint32_t version() const { return version_; }
 
   // Reads, checks and decodes chunk i. The result stays valid until the next call. Any order
   // works and gives the same records; a chunk's error is thrown by the call for that chunk.
@@ -83,7 +87,8 @@ class TraceReader {
   std::uint64_t index_offset_ = 0;
   TraceMetadata metadata_;
   std::vector<ChunkInfo> chunks_;
-  std::uint64_t counts_[4] = {0, 0, 0, 0};
+  std::uint64_t counts_[5] = {0, 0, 0, 0, 0};
+  std::uint32_t version_ = kTraceVersion;
   std::unique_ptr<ReadState> state_;
 };
 
@@ -101,7 +106,7 @@ struct VertexBatch {
 class VertexTraceReader {
  public:
   explicit VertexTraceReader(const std::string& path) : reader_(path) {
-    reader_.set_read_ahead_kinds({true, false, false});
+    reader_.set_read_ahead_kinds({true, false, false, false});
   }
   const TraceMetadata& metadata() const { return reader_.metadata(); }
   std::uint64_t records() const { return reader_.records(RecordKind::Vertex); }
@@ -117,7 +122,7 @@ class VertexTraceReader {
 class TexelTraceReader {
  public:
   explicit TexelTraceReader(const std::string& path) : reader_(path) {
-    reader_.set_read_ahead_kinds({false, true, false});
+    reader_.set_read_ahead_kinds({false, true, false, false});
   }
   const TraceMetadata& metadata() const { return reader_.metadata(); }
   std::uint64_t records() const { return reader_.records(RecordKind::Texel); }

@@ -108,6 +108,13 @@ void TraceWriter::flush_addresses() {
   addresses_.clear();
 }
 
+void TraceWriter::flush_framebuffer() {
+  if (framebuffer_.empty()) return;
+  encode_framebuffer_records(framebuffer_, raw_);
+  write_chunk(RecordKind::Framebuffer, 0, static_cast<std::uint32_t>(framebuffer_.size()));
+  framebuffer_.clear();
+}
+
 void TraceWriter::begin_draw(const DrawInfo& draw) {
   if (finished_) throw std::logic_error("TraceWriter: begin_draw after finish");
   if (draw_open_) flush_vertices(true);  // a draw without end_draw ends where the next begins
@@ -128,24 +135,33 @@ void TraceWriter::vertex_fetches(std::span<const VertexFetch> fetches) {
   }
 }
 
+namespace {
+// Appends records to a kind's pending chunk, handing each full chunk to `flush`.
+template <typename Record, typename Flush>
+void append_in_chunks(std::vector<Record>& pending, std::span<const Record> records, std::size_t chunk_records,
+                      Flush flush) {
+  while (!records.empty()) {
+    const std::size_t take = std::min(chunk_records - pending.size(), records.size());
+    pending.insert(pending.end(), records.begin(), records.begin() + static_cast<std::ptrdiff_t>(take));
+    records = records.subspan(take);
+    if (pending.size() == chunk_records) flush();
+  }
+}
+}  // namespace
+
 void TraceWriter::texel_accesses(std::span<const TexelAccess> accesses) {
   if (finished_) throw std::logic_error("TraceWriter: texel_accesses after finish");
-  while (!accesses.empty()) {
-    const std::size_t take = std::min<std::size_t>(options_.chunk_records - texels_.size(), accesses.size());
-    texels_.insert(texels_.end(), accesses.begin(), accesses.begin() + static_cast<std::ptrdiff_t>(take));
-    accesses = accesses.subspan(take);
-    if (texels_.size() == options_.chunk_records) flush_texels();
-  }
+  append_in_chunks(texels_, accesses, options_.chunk_records, [this] { flush_texels(); });
 }
 
 void TraceWriter::address_accesses(std::span<const AddressAccess> accesses) {
   if (finished_) throw std::logic_error("TraceWriter: address_accesses after finish");
-  while (!accesses.empty()) {
-    const std::size_t take = std::min<std::size_t>(options_.chunk_records - addresses_.size(), accesses.size());
-    addresses_.insert(addresses_.end(), accesses.begin(), accesses.begin() + static_cast<std::ptrdiff_t>(take));
-    accesses = accesses.subspan(take);
-    if (addresses_.size() == options_.chunk_records) flush_addresses();
-  }
+  append_in_chunks(addresses_, accesses, options_.chunk_records, [this] { flush_addresses(); });
+}
+
+void TraceWriter::framebuffer_accesses(std::span<const FramebufferAccess> accesses) {
+  if (finished_) throw std::logic_error("TraceWriter: framebuffer_accesses after finish");
+  append_in_chunks(framebuffer_, accesses, options_.chunk_records, [this] { flush_framebuffer(); });
 }
 
 void TraceWriter::end_draw() {
@@ -156,6 +172,7 @@ void TraceWriter::finish() {
   if (finished_) return;
   if (draw_open_) flush_vertices(true);
   flush_texels();
+  flush_framebuffer();
   flush_addresses();
   std::string index;
   put<std::uint32_t>(index, kIndexTag);

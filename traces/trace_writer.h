@@ -38,6 +38,8 @@ class TraceWriter : public EventSink {
   void vertex_fetches(std::span<const VertexFetch> fetches) override;
   void texel_accesses(std::span<const TexelAccess> accesses) override;
   void address_accesses(std::span<const AddressAccess> accesses) override;
+  void framebuffer_accesses(std::span<const FramebufferAccess> accesses) override;
+  bool wants_framebuffer_events() const override { return true; }
   void end_draw() override;
   // Flushes the last chunks, writes the index and footer, renames the file into place.
   void finish() override;
@@ -50,6 +52,7 @@ class TraceWriter : public EventSink {
   void flush_vertices(bool ends_draw);
   void flush_texels();
   void flush_addresses();
+  void flush_framebuffer();
   void write_chunk(RecordKind kind, std::uint8_t flags, std::uint32_t records);
   void write(const void* data, std::size_t size);
 
@@ -57,7 +60,7 @@ class TraceWriter : public EventSink {
   std::unique_ptr<State> state_;
   TraceWriterOptions options_;
   std::uint64_t offset_ = 0;
-  std::uint64_t counts_[4] = {0, 0, 0, 0};
+  std::uint64_t counts_[5] = {0, 0, 0, 0, 0};
   bool finished_ = false;
   // Open draw: its info, whether its first chunk has been written.
   bool draw_open_ = false;
@@ -66,6 +69,7 @@ class TraceWriter : public EventSink {
   std::vector<VertexFetch> vertices_;
   std::vector<TexelAccess> texels_;
   std::vector<AddressAccess> addresses_;
+  std::vector<FramebufferAccess> framebuffer_;
   std::vector<ChunkInfo> index_;
   std::string raw_;
   std::string compressed_;

@@ -113,7 +113,7 @@ TEST(CacheSpec, VertexAlternativesExpandPolicyThenEntries) {
 TEST(CacheSpec, ErrorsNameTheOptionTheSpecAndWhatIsAccepted) {
   EXPECT_EQ(error_of("size=16KiB,lines=64B"),
             "--cache 'size=16KiB,lines=64B': unknown key 'lines': expected one of entries, size, line, assoc, policy, "
-            "layout, texel, align, seed, source, stride");
+            "layout, texel, align, seed, source, stride, pixel, model");
   EXPECT_EQ(error_of("size=16KiB,size=8KiB"), "--cache 'size=16KiB,size=8KiB': key 'size' given twice");
   EXPECT_EQ(error_of("size=16KiB,,line=64B"),
             "--cache 'size=16KiB,,line=64B': empty item; expected key=value items separated by ','");
@@ -139,12 +139,12 @@ TEST(CacheSpec, ErrorsNameTheOptionTheSpecAndWhatIsAccepted) {
   EXPECT_EQ(error_of("size=1KiB,seed=1/2"),
             "--cache 'size=1KiB,seed=1/2': seed takes one value, not alternatives: 1/2");
   EXPECT_EQ(error_of("size=1KiB,source=pixels"),
-            "--cache 'size=1KiB,source=pixels': source=pixels: expected texel, vertex or address");
+            "--cache 'size=1KiB,source=pixels': source=pixels: expected texel, vertex, address, depth or colour");
   EXPECT_THAT(error_of("size=3KiB..8KiB"), HasSubstr("a range between two powers of two"));
   EXPECT_THAT(error_of("size=lots"), HasSubstr("--cache size: 'lots': expected a byte size"));
   EXPECT_EQ(error_of(""),
             "--cache: empty cache spec; expected key=value items (entries, size, line, assoc, policy, "
-            "layout, texel, align, seed, source, stride)");
+            "layout, texel, align, seed, source, stride, pixel, model)");
   EXPECT_THAT(error_of("size=1KiB,big"), HasSubstr("item 'big': expected key=value, with key one of entries, size"));
 }
 
@@ -191,6 +191,53 @@ TEST(CacheSpec, HelpListsEveryKey) {
   const std::string help = cache_spec_keys_help();
   for (const char* key : {"entries (vertex)", "size (byte)", "policy:", "layout (byte)", "stride (byte)"})
     EXPECT_THAT(help, HasSubstr(key));
+}
+
+TEST(CacheSpec, DepthAndColourCachesTheAttilaModelAndPixelBytes) {
+  const FramebufferCacheSpec attila = attila_framebuffer_cache(FramebufferBuffer::Depth);
+  EXPECT_EQ(attila.cache.size_bytes, 16384u);  // 4 ways x 16 lines x (8 x 8 pixels x 4 B)
+  EXPECT_EQ(attila.cache.line_bytes, 256u);
+  EXPECT_EQ(attila.cache.assoc, 4u);
+  EXPECT_EQ(attila.cache.policy, ReplacementPolicy::Lru);
+  EXPECT_EQ(layout_name(attila.layout), "block8");
+  EXPECT_EQ(attila.layout.texel_bytes, 4u);
+  EXPECT_EQ(format_framebuffer_cache_spec(attila),
+            "source=depth,size=16KiB,line=256B,assoc=4,policy=lru,layout=block8,pixel=4B");
+  // Keys beside the model override it, in any order.
+  const FramebufferCacheSpec bigger =
+      parse_framebuffer_cache("size=32KiB,model=attila,pixel=2B", "--ccache", FramebufferBuffer::Colour);
+  EXPECT_EQ(bigger.buffer, FramebufferBuffer::Colour);
+  EXPECT_EQ(bigger.cache.size_bytes, 32768u);
+  EXPECT_EQ(bigger.cache.line_bytes, 256u);
+  EXPECT_EQ(bigger.layout.texel_bytes, 2u);
+  // In --cache, source= says which buffer; alternatives expand as for any byte cache.
+  const CacheSpec spec = parse_cache_spec("source=colour,size=4KiB/8KiB,line=64B,layout=linear/morton", "--cache");
+  const std::vector<FramebufferCacheSpec> caches = framebuffer_caches(spec);
+  ASSERT_EQ(caches.size(), 4u);
+  EXPECT_EQ(caches[3].buffer, FramebufferBuffer::Colour);
+  EXPECT_EQ(layout_name(caches[3].layout), "morton");
+  EXPECT_EQ(caches[3].cache.size_bytes, 8192u);
+  EXPECT_TRUE(framebuffer_caches(parse_cache_spec("size=4KiB", "--cache")).empty());
+}
+
+TEST(CacheSpec, DepthAndColourCacheErrorsSayWhatFits) {
+  EXPECT_THAT(error_of("size=4KiB,pixel=4B"), HasSubstr("add source=depth or source=colour"));
+  EXPECT_THAT(error_of("source=depth,size=4KiB,texel=4B"), HasSubstr("texel= does not apply to a depth cache"));
+  EXPECT_THAT(error_of("source=depth,size=4KiB,policy=opt"), HasSubstr("policy=opt"));
+  EXPECT_THAT(error_of("source=stencil,size=4KiB"), HasSubstr("texel, vertex, address, depth or colour"));
+  EXPECT_THAT(error_of("model=ati"), HasSubstr("model=ati: expected attila"));
+  try {
+    parse_framebuffer_cache("model=attila,source=colour", "--zcache", FramebufferBuffer::Depth);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_THAT(std::string(e.what()), HasSubstr("--zcache 'model=attila,source=colour': expected a depth cache"));
+  }
+  try {
+    sweep_spec(parse_cache_spec("source=depth,size=4KiB", "--cache"), SweepSource::Texel);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_THAT(std::string(e.what()), HasSubstr("replayed"));
+  }
 }
 
 }  // namespace

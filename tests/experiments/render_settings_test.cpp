@@ -21,6 +21,8 @@ TEST(RenderTraceMetadata, StatesEverySettingOfTheRender) {
   flags.cull = "back";
   flags.lighting = true;
   flags.order = "tipsy";
+  flags.depth_test = "late";
+  flags.hiz = true;
   const Scene scene = load_render_scene(flags);
   const TextureLevels levels = texture_levels(scene);
   ASSERT_FALSE(levels.empty());
@@ -32,7 +34,8 @@ TEST(RenderTraceMetadata, StatesEverySettingOfTheRender) {
   EXPECT_EQ(metadata.filter, "nearest");
   EXPECT_EQ(metadata.textures, levels);
   const std::map<std::string, std::string> extra = {
-      {"cull", "back"}, {"lighting", "on"}, {"lod", "max_component"}, {"raster", "tiled8"}, {"wrap", "clamp_to_edge"}};
+      {"cull", "back"},         {"lighting", "on"},       {"lod", "max_component"}, {"raster", "tiled8"},
+      {"wrap", "clamp_to_edge"}, {"depth_test", "late"}, {"hiz", "on"}};
   EXPECT_EQ(metadata.extra, extra);
 }
 

@@ -82,10 +82,13 @@ TEST(TextureExperiment, LiveRenderAgreesWithTheSweptTraceToTheMiss) {
     const auto swept = nlohmann::json::parse(
         run({"texsweep", scene, "--order", order, "--cull", "back", "--raster", "scanline", "--tcache",
              "size=4KiB,line=64B,assoc=full,policy=lru,layout=linear", "--format", "json"}));
-    ASSERT_EQ(swept.size(), 1u);
+    // One sweep row, then the frame-traffic row of the same render.
+    ASSERT_EQ(swept.size(), 2u);
     EXPECT_EQ(live[0]["texture_misses"], swept[0]["misses"]) << scene << " " << order;
     EXPECT_EQ(live[0]["texel_accesses"], swept[0]["accesses"]) << scene << " " << order;
     EXPECT_NEAR(live[0]["acmr"].get<double>(), swept[0]["vertex_acmr"].get<double>(), 1e-12) << scene << " " << order;
+    for (const char* key : {"vertex_bytes", "depth_read_bytes", "depth_write_bytes", "colour_write_bytes", "overdraw"})
+      EXPECT_EQ(live[0][key], swept[1][key]) << scene << " " << order << " " << key;
   }
 }
 

@@ -36,9 +36,18 @@ class LoggingSink final : public EventSink {
     for (const AddressAccess& a : accesses) line += " " + std::to_string(a.address) + ":" + std::to_string(a.label);
     log.push_back(line);
   }
+  void framebuffer_accesses(std::span<const FramebufferAccess> accesses) override {
+    std::string line = "framebuffer_accesses";
+    for (const FramebufferAccess& a : accesses)
+      line += " " + std::to_string(a.x) + "," + std::to_string(a.y) + ":" + std::to_string(int(a.op)) + "/" +
+              std::to_string(a.mask) + "#" + std::to_string(a.triangle);
+    log.push_back(line);
+  }
+  bool wants_framebuffer_events() const override { return wants; }
   void finish() override { log.push_back("finish"); }
 
   std::vector<std::string> log;
+  bool wants = false;
 };
 
 TEST(TeeSink, ForwardsEveryKindOfEventToEverySinkInOrder) {
@@ -52,6 +61,7 @@ TEST(TeeSink, ForwardsEveryKindOfEventToEverySinkInOrder) {
   sink.begin_draw(DrawInfo{3, PrimitiveType::TriangleStrip, 65535});
   sink.vertex_fetches(fetches);
   sink.texel_accesses(texels);
+  sink.framebuffer_accesses(std::vector<FramebufferAccess>{{4, 6, FramebufferOp::ColourWrite, 9, 12}});
   sink.end_draw();
   sink.address_accesses(addresses);
   sink.finish();
@@ -60,12 +70,17 @@ TEST(TeeSink, ForwardsEveryKindOfEventToEverySinkInOrder) {
       "begin_draw 3 type 1 restart 65535",
       "vertex_fetches 7* 8 9",
       "texel_accesses t1/l2/30,40@5,6#0 t0/l0/3,4@5,7#1",
+      "framebuffer_accesses 4,6:2/9#12",
       "end_draw",
       "address_accesses 4096:0 8256:1 1099511627775:2",
       "finish",
   };
   EXPECT_EQ(first.log, expected);
   EXPECT_EQ(second.log, expected);
+  // The renderer records framebuffer events when any sink of the tee wants them.
+  EXPECT_FALSE(tee.wants_framebuffer_events());
+  second.wants = true;
+  EXPECT_TRUE(tee.wants_framebuffer_events());
 }
 
 }  // namespace

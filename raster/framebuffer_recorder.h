@@ -1,0 +1,48 @@
+// Batches framebuffer events (depth-test reads, depth writes, colour writes of a 2x2 quad) for an
+// EventSink, as TexelRecorder batches texel reads: the raster loop stores an event, the virtual
+// call is paid once per kCapacity events. Without a sink that wants framebuffer events, record()
+// is one predictable branch.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+
+#include "traces/sink.h"
+
+namespace rastrace {
+
+class FramebufferRecorder {
+ public:
+  static constexpr std::size_t kCapacity = 4096;
+
+  // Records only when `sink` is set and wants framebuffer events.
+  explicit FramebufferRecorder(EventSink* sink = nullptr)
+      : sink_(sink && sink->wants_framebuffer_events() ? sink : nullptr) {}
+  FramebufferRecorder(const FramebufferRecorder&) = delete;
+  FramebufferRecorder& operator=(const FramebufferRecorder&) = delete;
+  ~FramebufferRecorder() { flush(); }
+
+  bool active() const { return sink_ != nullptr; }
+  void record(FramebufferOp op, int quad_x, int quad_y, unsigned mask, std::uint32_t triangle) {
+    if (!sink_) return;
+    FramebufferAccess& event = buffer_[size_++];
+    event.x = static_cast<std::uint16_t>(quad_x);
+    event.y = static_cast<std::uint16_t>(quad_y);
+    event.op = op;
+    event.mask = static_cast<std::uint8_t>(mask);
+    event.triangle = triangle;
+    if (size_ == kCapacity) flush();
+  }
+  void flush() {
+    if (sink_ && size_) sink_->framebuffer_accesses(std::span<const FramebufferAccess>(buffer_.data(), size_));
+    size_ = 0;
+  }
+
+ private:
+  EventSink* sink_;
+  std::size_t size_ = 0;
+  std::array<FramebufferAccess, kCapacity> buffer_;
+};
+
+}  // namespace rastrace
