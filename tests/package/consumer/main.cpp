@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include <rastrace/cache_sim.h>
+#include <rastrace/core.h>
 #include <rastrace/traces.h>
 
 int main(int argc, char** argv) {
