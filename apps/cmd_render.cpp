@@ -4,26 +4,15 @@
 //  [--vipm METHOD --lod N] [--json]`:
 // draws a scene with the software pipeline (in a triangle ordering, or at a VIPM level of detail),
 // simulating a post-transform vertex cache, a texture cache and the depth and colour caches live
-// (and writing the trace when asked), and prints what the frame cost: triangles drawn, vertices
-// shaded, ACMR, fragments, texel accesses, texture misses, bytes per fragment, the overdraw, and
-// the four streams of memory traffic (experiments/frame_traffic.h) per frame and per pixel.
+// (and writing the trace when asked), and prints what the frame cost (experiments/frame_render.h).
 #include <iostream>
 #include <memory>
-#include <optional>
 
 #include "apps/commands.h"
 #include "apps/render_flags.h"
-#include "cache_sim/live_bank_sink.h"
-#include "cache_sim/texture_layout.h"
 #include "core/error.h"
 #include "core/table.h"
-#include "core/units.h"
-#include "cache_sim/cache_spec.h"
-#include "experiments/frame_traffic.h"
-#include "experiments/vipm_render.h"
-#include "pipeline/scene_order.h"
-#include "traces/tee_sink.h"
-#include "traces/trace_writer.h"
+#include "experiments/frame_render.h"
 
 namespace rastrace {
 
@@ -47,116 +36,23 @@ struct RenderCommand {
 
 void run_render(const RenderCommand& command) {
   const TableFormat format = command.json ? TableFormat::Json : parse_table_format(command.format);
-  RenderOptions options = render_options_from(command.flags);
-  const VertexCacheSpec vcache = parse_vcache_spec(command.vcache);
-  options.pipeline.cache_policy = vcache.policy;
-  options.pipeline.cache_entries = vcache.entries;
   if (!command.old_layout.empty())
     throw InputError("--layout '" + command.old_layout + "': write the layout in the texture cache spec, e.g. " +
                      "--tcache size=16KiB,line=64B,assoc=4,policy=lru,layout=" + command.old_layout);
-  const TextureCacheSpec tcache = parse_tcache_spec(command.tcache);
-  FrameCaches caches;
-  caches.vertex = vcache;
-  caches.texture = tcache;
-  caches.depth = parse_framebuffer_cache(command.zcache, "--zcache", FramebufferBuffer::Depth);
-  caches.colour = parse_framebuffer_cache(command.ccache, "--ccache", FramebufferBuffer::Colour);
-
-  if (command.vipm.empty() && !command.lod.empty())
-    throw InputError("--lod '" + command.lod.substr(0, 32) + "': the level of detail needs --vipm METHOD" +
-                     " (the texture LOD formula is --lod-formula)");
-  std::optional<VipmScene> vipm;
-  OrderedDraws ordered;
-  if (!command.vipm.empty()) {
-    if (command.flags.order != "original")
-      throw InputError("--order " + command.flags.order + " with --vipm: a VIPM representation has its own order");
-    VipmSceneSpec spec;
-    spec.method = command.vipm;
-    spec.lod = parse_vipm_lod(command.lod.empty() ? "0" : command.lod);
-    vipm.emplace(build_vipm_scene(load_render_scene(command.flags), spec));
-    options.object_draws = vipm->draws;
-    options.draw_objects = vipm->draw_objects;
-  }
-  const Scene scene = vipm ? vipm->scene : load_render_scene(command.flags);
-  if (!vipm) {
-    ReorderParams order_params;
-    order_params.cache_size = command.flags.order_cache;
-    ordered = order_scene(scene, command.flags.order, order_params);
-    options.object_draws = ordered.draws;
-  }
-  const TextureLevels levels = texture_levels(scene);
-
-  LiveBankSink bank(frame_bank_config(caches), levels,
-                    FrameSize{static_cast<std::uint32_t>(scene.width), static_cast<std::uint32_t>(scene.height)});
-  std::vector<EventSink*> sinks = {&bank};
-  std::optional<TraceWriter> writer;
-  if (!command.trace.empty()) {
-    TraceMetadata metadata = render_trace_metadata(command.flags, scene, levels);
-    if (vipm) {
-      metadata.ordering = "vipm:" + command.vipm;
-      metadata.extra["vipm_lod"] = describe_vipm_lods(vipm->parts);
-    }
-    writer.emplace(command.trace, std::move(metadata));
-    sinks.push_back(&*writer);
-  }
-  TeeSink tee(sinks);
-  const RenderResult result = render_scene(scene, options, &tee);  // calls finish() on every sink
-  result.framebuffer.write_colour(command.output);
-  if (!command.depth.empty()) result.framebuffer.write_depth(command.depth);
-
-  const PipelineStats& p = result.pipeline;
-  const RasterStats& r = result.raster;
-  const CacheStats& t = bank.texture_stats().at(0);
-  const FrameTraffic traffic = measure_frame_traffic(caches, bank, result);
-  const VertexStreamStats& v = bank.vertex_stats().at(0);
-  if (v.misses != p.vertices_shaded)  // the live model and the pipeline count the same misses
-    throw std::logic_error("vertex cache model disagrees with the pipeline's shader invocations");
-
-  Table table;
-  table.title = "Frame: " + scene.name;
-  table.parameters = {{"scene", command.flags.scene},
-                      {"size", std::to_string(scene.width) + "x" + std::to_string(scene.height)},
-                      {"order", vipm ? "vipm:" + command.vipm : command.flags.order},
-                      {"vcache", command.vcache},
-                      {"tcache", describe(tcache.cache)},
-                      {"layout", layout_name(tcache.layout)},
-                      {"raster", command.flags.raster},
-                      {"filter", command.flags.filter},
-                      {"wrap", command.flags.wrap},
-                      {"lod_formula", command.flags.lod},
-                      {"cull", command.flags.cull},
-                      {"depth_test", command.flags.depth_test},
-                      {"hiz", command.flags.hiz ? "on" : "off"},
-                      {"image", command.output}};
-  for (auto& parameter : frame_cache_parameters(caches))
-    if (parameter.first != "vcache" && parameter.first != "tcache") table.parameters.push_back(std::move(parameter));
-  if (vipm) {
-    table.parameters.emplace_back("vipm", command.vipm);
-    table.parameters.emplace_back("vipm_lod", describe_vipm_lods(vipm->parts));
-  }
-  if (!command.trace.empty()) table.parameters.emplace_back("trace", command.trace);
-  table.columns = {{"triangles", "triangles drawn", 0},
-                   {"degenerate", "degenerate", 0},
-                   {"culled", "culled", 0},
-                   {"vertices_shaded", "vertices shaded", 0},
-                   {"acmr", "ACMR", 3},
-                   {"fragments", "fragments", 0},
-                   {"fragments_shaded", "fragments shaded", 0},
-                   {"depth_writes", "depth writes", 0},
-                   {"texel_accesses", "texel accesses", 0},
-                   {"texture_misses", "texture misses", 0},
-                   {"texture_miss_rate", "miss rate", 4},
-                   {"bytes_per_fragment", "texture bytes/fragment", 3}};
-  for (TableColumn& column : frame_traffic_columns()) table.columns.push_back(std::move(column));
-  std::vector<TableCell> row;
-  for (const std::uint64_t count : {p.triangles, p.degenerate, p.culled, p.vertices_shaded}) row.emplace_back(count);
-  row.emplace_back(p.acmr());
-  for (const std::uint64_t count : {r.fragments, r.fragments_shaded, r.fragments_passed, r.texel_reads, t.misses})
-    row.emplace_back(count);
-  row.emplace_back(t.miss_rate());
-  row.emplace_back(r.fragments_shaded ? double(t.bytes_fetched) / double(r.fragments_shaded) : 0.0);
-  for (TableCell& cell : frame_traffic_cells(traffic)) row.push_back(std::move(cell));
-  table.add_row(std::move(row));
-  std::cout << render_table(table, format);
+  FrameSpec spec;
+  spec.flags = command.flags;
+  spec.vcache = command.vcache;
+  spec.tcache = command.tcache;
+  spec.zcache = command.zcache;
+  spec.ccache = command.ccache;
+  spec.trace = command.trace;
+  spec.vipm = command.vipm;
+  spec.lod = command.lod;
+  spec.image = command.output;
+  const Frame frame = render_frame(spec);
+  frame.result.framebuffer.write_colour(command.output);
+  if (!command.depth.empty()) frame.result.framebuffer.write_depth(command.depth);
+  std::cout << render_table(frame.table, format);
 }
 
 }  // namespace

@@ -9,10 +9,12 @@ if(RASTRACE_WERROR)
 endif()
 
 # rastrace_module(NAME SOURCES... DEPENDS targets...) declares one module library whose public
-# headers are included as "NAME/header.h" from the repository root.
+# headers are included as "NAME/header.h" from the repository root (from include/rastrace once
+# installed: cmake/Install.cmake).
 function(rastrace_module name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
   add_library(${name} STATIC ${ARG_SOURCES})
-  target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR})
+  target_include_directories(${name} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+                                            $<INSTALL_INTERFACE:include/rastrace> $<INSTALL_INTERFACE:include>)
   target_link_libraries(${name} PUBLIC ${ARG_DEPENDS})
 endfunction()

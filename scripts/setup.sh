@@ -25,6 +25,12 @@ packages=(
   libcgal-demo            # real meshes (data.tar.gz)
   assimp-testmodels       # textured models
   slurm-wlm munge         # the sharded-sweep test runs a real single-node Slurm
+  # The Python module (python/), for Debian's /usr/bin/python3:
+  pybind11-dev python3-dev  # building the extension (pybind11's CMake package, Python.h)
+  python3-numpy           # its arrays (every result)
+  python3-pytest          # the Python tests (ctest runs them)
+  python3-pandas python3-matplotlib  # the tests and examples/: sweeps as DataFrames, plots
+  python3-pip python3-venv  # `pip install .` into a venv (README, "Python")
 )
 
 missing=()

@@ -1,0 +1,127 @@
+#include "experiments/frame_render.h"
+
+#include <optional>
+#include <stdexcept>
+
+#include "cache_sim/cache_spec.h"
+#include "cache_sim/live_bank_sink.h"
+#include "cache_sim/texture_layout.h"
+#include "core/error.h"
+#include "experiments/frame_traffic.h"
+#include "experiments/vipm_render.h"
+#include "pipeline/scene_order.h"
+#include "traces/tee_sink.h"
+#include "traces/trace_writer.h"
+
+namespace rastrace {
+
+Frame render_frame(const FrameSpec& spec) {
+  const SceneRenderFlags& flags = spec.flags;
+  RenderOptions options = render_options_from(flags);
+  const VertexCacheSpec vcache = parse_vertex_cache(spec.vcache, "--vcache");
+  options.pipeline.cache_policy = vcache.policy;
+  options.pipeline.cache_entries = vcache.entries;
+  const ByteCacheChoice tcache = parse_byte_cache(spec.tcache, "--tcache");
+  FrameCaches caches;
+  caches.vertex = vcache;
+  caches.texture = {tcache.cache, tcache.layout};
+  caches.depth = parse_framebuffer_cache(spec.zcache, "--zcache", FramebufferBuffer::Depth);
+  caches.colour = parse_framebuffer_cache(spec.ccache, "--ccache", FramebufferBuffer::Colour);
+
+  if (spec.vipm.empty() && !spec.lod.empty())
+    throw InputError("--lod '" + spec.lod.substr(0, 32) + "': the level of detail needs --vipm METHOD" +
+                     " (the texture LOD formula is --lod-formula)");
+  std::optional<VipmScene> vipm;
+  OrderedDraws ordered;
+  if (!spec.vipm.empty()) {
+    if (flags.order != "original")
+      throw InputError("--order " + flags.order + " with --vipm: a VIPM representation has its own order");
+    VipmSceneSpec vipm_spec;
+    vipm_spec.method = spec.vipm;
+    vipm_spec.lod = parse_vipm_lod(spec.lod.empty() ? "0" : spec.lod);
+    vipm.emplace(build_vipm_scene(load_render_scene(flags), vipm_spec));
+    options.object_draws = vipm->draws;
+    options.draw_objects = vipm->draw_objects;
+  }
+  const Scene scene = vipm ? vipm->scene : load_render_scene(flags);
+  if (!vipm) {
+    ReorderParams order_params;
+    order_params.cache_size = flags.order_cache;
+    ordered = order_scene(scene, flags.order, order_params);
+    options.object_draws = ordered.draws;
+  }
+  const TextureLevels levels = texture_levels(scene);
+
+  LiveBankSink bank(frame_bank_config(caches), levels,
+                    FrameSize{static_cast<std::uint32_t>(scene.width), static_cast<std::uint32_t>(scene.height)});
+  std::vector<EventSink*> sinks = {&bank};
+  std::optional<TraceWriter> writer;
+  if (!spec.trace.empty()) {
+    TraceMetadata metadata = render_trace_metadata(flags, scene, levels);
+    if (vipm) {
+      metadata.ordering = "vipm:" + spec.vipm;
+      metadata.extra["vipm_lod"] = describe_vipm_lods(vipm->parts);
+    }
+    writer.emplace(spec.trace, std::move(metadata));
+    sinks.push_back(&*writer);
+  }
+  TeeSink tee(sinks);
+  Frame frame{render_scene(scene, options, &tee), {}};  // render_scene calls finish() on every sink
+
+  const PipelineStats& p = frame.result.pipeline;
+  const RasterStats& r = frame.result.raster;
+  const CacheStats& t = bank.texture_stats().at(0);
+  const FrameTraffic traffic = measure_frame_traffic(caches, bank, frame.result);
+  const VertexStreamStats& v = bank.vertex_stats().at(0);
+  if (v.misses != p.vertices_shaded)  // the live model and the pipeline count the same misses
+    throw std::logic_error("vertex cache model disagrees with the pipeline's shader invocations");
+
+  Table& table = frame.table;
+  table.title = "Frame: " + scene.name;
+  table.parameters = {{"scene", flags.scene},
+                      {"size", std::to_string(scene.width) + "x" + std::to_string(scene.height)},
+                      {"order", vipm ? "vipm:" + spec.vipm : flags.order},
+                      {"vcache", spec.vcache},
+                      {"tcache", describe(tcache.cache)},
+                      {"layout", layout_name(tcache.layout)},
+                      {"raster", flags.raster},
+                      {"filter", flags.filter},
+                      {"wrap", flags.wrap},
+                      {"lod_formula", flags.lod},
+                      {"cull", flags.cull},
+                      {"depth_test", flags.depth_test},
+                      {"hiz", flags.hiz ? "on" : "off"},
+                      {"image", spec.image}};
+  for (auto& parameter : frame_cache_parameters(caches))
+    if (parameter.first != "vcache" && parameter.first != "tcache") table.parameters.push_back(std::move(parameter));
+  if (vipm) {
+    table.parameters.emplace_back("vipm", spec.vipm);
+    table.parameters.emplace_back("vipm_lod", describe_vipm_lods(vipm->parts));
+  }
+  if (!spec.trace.empty()) table.parameters.emplace_back("trace", spec.trace);
+  table.columns = {{"triangles", "triangles drawn", 0},
+                   {"degenerate", "degenerate", 0},
+                   {"culled", "culled", 0},
+                   {"vertices_shaded", "vertices shaded", 0},
+                   {"acmr", "ACMR", 3},
+                   {"fragments", "fragments", 0},
+                   {"fragments_shaded", "fragments shaded", 0},
+                   {"depth_writes", "depth writes", 0},
+                   {"texel_accesses", "texel accesses", 0},
+                   {"texture_misses", "texture misses", 0},
+                   {"texture_miss_rate", "miss rate", 4},
+                   {"bytes_per_fragment", "texture bytes/fragment", 3}};
+  for (TableColumn& column : frame_traffic_columns()) table.columns.push_back(std::move(column));
+  std::vector<TableCell> row;
+  for (const std::uint64_t count : {p.triangles, p.degenerate, p.culled, p.vertices_shaded}) row.emplace_back(count);
+  row.emplace_back(p.acmr());
+  for (const std::uint64_t count : {r.fragments, r.fragments_shaded, r.fragments_passed, r.texel_reads, t.misses})
+    row.emplace_back(count);
+  row.emplace_back(t.miss_rate());
+  row.emplace_back(r.fragments_shaded ? double(t.bytes_fetched) / double(r.fragments_shaded) : 0.0);
+  for (TableCell& cell : frame_traffic_cells(traffic)) row.push_back(std::move(cell));
+  table.add_row(std::move(row));
+  return frame;
+}
+
+}  // namespace rastrace

@@ -1,0 +1,37 @@
+// One frame as `rastrace render` draws it (and the Python module's `render`): a scene in a
+// triangle ordering or at a VIPM level of detail, drawn by the software pipeline with a
+// post-transform vertex cache, a texture cache and the depth and colour caches simulated live, the
+// trace written when asked, and the frame's cost as a one-row table (triangles, vertices shaded,
+// ACMR, fragments, texel accesses, texture misses, bytes per fragment, overdraw, and the four
+// streams of memory traffic of experiments/frame_traffic.h) that states every setting.
+#pragma once
+
+#include <string>
+
+#include "core/table.h"
+#include "experiments/render_settings.h"
+#include "pipeline/render_scene.h"
+
+namespace rastrace {
+
+struct FrameSpec {
+  SceneRenderFlags flags;
+  std::string vcache = "entries=16,policy=fifo";                          // cache spec, one vertex cache
+  std::string tcache = "size=16KiB,line=64B,assoc=4,policy=lru,layout=block4";  // one byte cache and layout
+  std::string zcache = "model=attila";  // depth cache (source=depth implied)
+  std::string ccache = "model=attila";  // colour cache (source=colour implied)
+  std::string trace;  // write the frame's trace (rastrace container) here when not empty
+  std::string vipm;   // a VIPM method: draw the LoD `lod` instead of an ordering
+  std::string lod;    // collapses done, with vipm
+  std::string image;  // where the caller writes the image: stated in the table only
+};
+
+struct Frame {
+  RenderResult result;
+  Table table;  // one row; title "Frame: <scene>"
+};
+
+// Throws InputError for a bad scene, cache spec, ordering or VIPM setting.
+Frame render_frame(const FrameSpec& spec);
+
+}  // namespace rastrace
