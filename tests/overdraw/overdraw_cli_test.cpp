@@ -53,14 +53,12 @@ TEST(OverdrawCli, BadInputIsExitCode1NamingTheOption) {
   r = run({"overdraw", mesh, "--algo", "front-to-back", "--view", "0,0,0"});
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("--view"), std::string::npos) << r.err;
-  r = run({"overdraw", mesh, "--rules", "meshopt"});
-  EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("--rules 'meshopt'"), std::string::npos) << r.err;
   r = run({"overdraw", mesh, "--algo", "tipsy-overdraw", "--lambda", "0"});
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("--lambda"), std::string::npos) << r.err;
-  EXPECT_EQ(run({"overdraw", mesh, "--rules", "meshopt-0.18", "--resolution", "128"}).exit_code, 1);
-  EXPECT_EQ(run({"overdraw", mesh, "--algo", "nosuch"}).exit_code, 1);
+  r = run({"overdraw", mesh, "--rules", "meshopt-0.18", "--resolution", "128"});
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("--resolution 256"), std::string::npos) << r.err;
 }
 
 }  // namespace
