@@ -17,13 +17,14 @@ set(RASTRACE_INSTALLED_MODULES
   "traces: zstd nlohmann_json"
   "cache_sim:"
   "scenes: glm assimp OpenImageIO nlohmann_json"
-  "reorder:"
+  "reorder: meshoptimizer"
   "reorder_adjacency: lemon"
   "lod: glm meshoptimizer"
+  "overdraw: glm meshoptimizer"
   "raster: glm OpenImageIO"
   "pipeline: glm"
   "reference: glm OpenImageIO OSMesa"
-  "experiments: glm nlohmann_json"
+  "experiments: glm nlohmann_json meshoptimizer"
 )
 
 set(config_modules "")

@@ -12,8 +12,8 @@
 //
 // OverdrawRules states exactly how depth is computed and tested; the presets reproduce
 // meshoptimizer 0.18 (Debian) bit for bit, upstream meshoptimizer after its 2025 fix, and a
-// rasterizer without either artefact (the default). docs/DESIGN.md, "Overdraw", lists what each
-// rule changes on real meshes.
+// rasterizer without either artefact (the default). docs/DESIGN.md, "View-independent overdraw",
+// lists what each rule changes on real meshes.
 #pragma once
 
 #include <cstdint>

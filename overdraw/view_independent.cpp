@@ -38,6 +38,7 @@ OverdrawCounts axis_views(std::span<const glm::vec3> positions, std::span<const 
     high = glm::max(high, p);
   }
   const float extent = std::max(high.x - low.x, std::max(high.y - low.y, high.z - low.z));
+  if (!std::isfinite(extent)) throw InputError("overdraw: the bounding box's size overflows float");
   if (!(extent > 0)) return {};
   const float scale = float(options.resolution) / extent;
   std::vector<glm::vec3> scaled(triangle_list.size());
@@ -72,6 +73,7 @@ OverdrawCounts directional_views(std::span<const glm::vec3> positions, std::span
   }
   const glm::vec3 centre = (low + high) * 0.5f;
   const float radius = glm::length(high - low) * 0.5f;
+  if (!std::isfinite(radius)) throw InputError("overdraw: the bounding box's size overflows float");
   if (!(radius > 0)) return {};
   const float half = float(options.resolution) * 0.5f;
   const float scale = half / radius * (1.0f - 1e-6f);  // keep the sphere's rim inside the grid

@@ -175,6 +175,8 @@ TEST(OverdrawMeasure, BadInputIsAnInputError) {
   std::vector<glm::vec3> nan = stack.positions;
   nan[2].x = std::nanf("");
   EXPECT_THROW(view_independent_overdraw(nan, stack.list({0})), InputError);
+  const std::vector<glm::vec3> vast = {{-3e38f, 0, 0}, {3e38f, 0, 0}, {0, 1, 0}};  // finite, but their span is not
+  EXPECT_THROW(view_independent_overdraw(vast, std::vector<std::uint32_t>{0, 1, 2}), InputError);
   OverdrawOptions zero;
   zero.directions = {glm::vec3(0.0f)};
   EXPECT_THROW(view_independent_overdraw(stack.positions, stack.list({0}), zero), InputError);
