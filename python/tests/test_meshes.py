@@ -1,16 +1,17 @@
 """load_mesh and load_scene: the loaders of the command line, geometry as numpy arrays."""
 
+import json
+
 import numpy as np
 import pytest
 
 import rastrace
-from conftest import DATA, cli_error, cli_json
+from conftest import DATA, cli, cli_error
 
 
 def test_load_mesh_matches_info():
     mesh = rastrace.load_mesh(str(DATA / "meshes" / "fandisk.off"))
-    info = cli_json("info", DATA / "meshes" / "fandisk.off")
-    info = info[0] if isinstance(info, list) else info
+    info = json.loads(cli("info", DATA / "meshes" / "fandisk.off", "--json").stdout)
     assert mesh.vertex_count == info["vertices"]
     assert mesh.face_count == info["faces"]
     assert mesh.positions.shape == (mesh.vertex_count, 3) and mesh.positions.dtype == np.float32
