@@ -22,7 +22,7 @@ void add_sweep_command(CLI::App& app) {
   CLI::App* command =
       app.add_subcommand("sweep", "Sweep cache sizes, lines, associativities, policies and layouts over a trace");
   struct Options {
-    std::string trace, cache = "size=1KiB..64KiB", format = "md", output, plot, shard;
+    std::string trace, cache = "size=1KiB..64KiB", format = "md", output, plot, shard, sample;
     RetiredCacheFlags retired;
     unsigned threads = 0;
     bool keep_vertex_cache = false;
@@ -47,13 +47,18 @@ void add_sweep_command(CLI::App& app) {
   command->add_option("--shard", o->shard,
                       "K/N: compute only the K-th of N disjoint parts of the configurations and write it as a "
                       "part (JSON) for `rastrace merge`");
+  command->add_option("--sample", o->sample,
+                      "Estimate from spatially hashed samples of the lines: RATE (0.01 or 1%) or RATE,max=LINES "
+                      "(fixed size, fully associative LRU only): SHARDS for fully associative LRU, miniature "
+                      "simulations for the rest; adds each row's expected error");
   command->footer(
       "Examples:\n"
       "  rastrace sweep frame.rtrace --cache size=1KiB..64KiB,assoc=1/2/4/full,policy=fifo/lru/opt,"
       "layout=linear/block4/block8/morton --plot missrate.png\n"
       "  rastrace sweep old.din --cache size=4KiB..32KiB,line=32B/64B,assoc=1/2/full --format csv\n"
       "  rastrace sweep frame.rtrace --cache entries=4..64,policy=fifo/lru --format json\n"
-      "  rastrace sweep frame.rtrace --cache size=1KiB..1MiB,policy=fifo/lru --shard 2/4 -o part-2.json");
+      "  rastrace sweep frame.rtrace --cache size=1KiB..1MiB,policy=fifo/lru --shard 2/4 -o part-2.json\n"
+      "  rastrace sweep long.rtrace --cache size=1KiB..4MiB,assoc=full/4,policy=lru/fifo --sample 1%");
   command->callback([o] {
     const TableFormat table_format = parse_table_format(o->format);
     std::optional<SweepShard> shard;
@@ -70,6 +75,7 @@ void add_sweep_command(CLI::App& app) {
     Table table;
     SweepPart part;
     if (cache.kind == CacheKind::Vertex) {
+      if (!o->sample.empty()) throw InputError("--sample: vertex caches are exact in one pass already; drop --sample");
       const auto rows = run_vertex_sweep(o->trace, cache.vertex_policies, cache.entries, !o->keep_vertex_cache,
                                          shard.value_or(SweepShard{}));
       parameters.emplace_back("vertex_cache_per_draw", o->keep_vertex_cache ? "kept" : "flushed");
@@ -79,6 +85,7 @@ void add_sweep_command(CLI::App& app) {
     } else {
       SweepSpec spec = sweep_spec(cache, default_source(summary));
       spec.shard = shard.value_or(SweepShard{});
+      if (!o->sample.empty()) spec.sample = parse_sample_spec(o->sample, "--sample");
       const SweepResult result = run_sweep(o->trace, spec, o->threads);
       for (const std::string& skipped : result.skipped) std::cerr << "rastrace sweep: skipped " << skipped << "\n";
       if (spec.source == SweepSource::Texel) {
@@ -88,6 +95,12 @@ void add_sweep_command(CLI::App& app) {
         parameters.emplace_back("vertex_stride_bytes", spec.stride);
       }
       parameters.emplace_back("random_seed", spec.seed);
+      if (spec.sample)
+        parameters.emplace_back("sampling", describe(*spec.sample) +
+                                                " of the lines by spatial hash: fully associative LRU by SHARDS "
+                                                "(Waldspurger et al. 2015), other caches by miniature simulation "
+                                                "(Waldspurger et al. 2017); expected error = half the difference of "
+                                                "two independent half samples");
       const std::string title = "Cache sweep over " + std::string(to_string(spec.source)) + " accesses";
       table = byte_cache_table(title, parameters, result.rows, to_string(spec.source));
       part.configurations = result.configurations;
@@ -102,7 +115,8 @@ void add_sweep_command(CLI::App& app) {
     }
     part.version = RASTRACE_VERSION;
     part.trace_digest = file_digest(o->trace);
-    part.configuration = "cache=" + o->cache + (o->keep_vertex_cache ? " keep-vertex-cache" : "");
+    part.configuration = "cache=" + o->cache + (o->keep_vertex_cache ? " keep-vertex-cache" : "") +
+                         (o->sample.empty() ? "" : " sample=" + o->sample);
     part.shard = *shard;
     part.table = std::move(table);
     write_output(o->output, sweep_part_json(part));

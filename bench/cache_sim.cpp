@@ -8,6 +8,10 @@
 //     most recent first, searched and rotated on every access), kept here only as the "before";
 //     over bunny00 in meshoptimizer's order (hits near the front of the recency list) and a random
 //     walk over 2^17 vertices (hits at every depth; a miss scans all resident entries)
+//   - vertex caches of every size 3..64 over bunny00 in meshoptimizer's order: one pass of
+//     VertexCacheSizes (FIFO lanes, LRU stack) against meshopt_analyzeVertexCache once per size and
+//     simulate_vertex_stream once per size (goal: one pass >= 8x the per-size meshoptimizer runs)
+//   - SHARDS at 1% and miniature FIFO simulations at 1% over the same line stream
 // Byte-cache inputs are the line numbers of a synthetic frame-like texel trace (512x512 pixels,
 // bilinear, a 1024^2 texture in block4 layout; tests/support/synthetic_frame.h).
 #include <meshoptimizer.h>
@@ -20,8 +24,10 @@
 #include "cache_sim/byte_cache.h"
 #include "cache_sim/lru_profile.h"
 #include "cache_sim/opt_cache.h"
+#include "cache_sim/shards.h"
 #include "cache_sim/texture_layout.h"
 #include "cache_sim/vertex_cache.h"
+#include "cache_sim/vertex_cache_sizes.h"
 #include "scenes/mesh_io.h"
 #include "tests/support/synthetic_frame.h"
 
@@ -69,6 +75,60 @@ void BM_FifoVertexReplay_Meshopt(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * indices.size()));
 }
 BENCHMARK(BM_FifoVertexReplay_Meshopt)->Arg(16)->Arg(32);
+
+// Every size 3..64 (meshoptimizer asserts at least 3): items are index-stream positions, each
+// looked up in all 62 caches.
+std::vector<unsigned> sizes_3_to_64() {
+  std::vector<unsigned> sizes;
+  for (unsigned k = 3; k <= 64; ++k) sizes.push_back(k);
+  return sizes;
+}
+
+void BM_VertexSizes3to64_OnePass(benchmark::State& state) {
+  const auto& indices = bunny_indices();
+  const auto policy = static_cast<VertexCachePolicy>(state.range(0));
+  const std::vector<unsigned> sizes = sizes_3_to_64();
+  std::uint64_t misses16 = 0;
+  for (auto _ : state) {
+    const auto stats = simulate_vertex_stream_sizes(indices, PrimitiveType::TriangleList, policy, sizes);
+    misses16 = stats[13].misses;
+    benchmark::DoNotOptimize(misses16);
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * indices.size()));
+  state.counters["misses_k16"] = static_cast<double>(misses16);
+  state.SetLabel(to_string(policy));
+}
+BENCHMARK(BM_VertexSizes3to64_OnePass)
+    ->Arg(static_cast<int>(VertexCachePolicy::Fifo))
+    ->Arg(static_cast<int>(VertexCachePolicy::Lru));
+
+void BM_VertexSizes3to64_MeshoptPerSize(benchmark::State& state) {
+  const auto& indices = bunny_indices();
+  const std::size_t vertices = vertex_count(indices);
+  std::uint64_t misses16 = 0;
+  for (auto _ : state)
+    for (unsigned k = 3; k <= 64; ++k) {
+      const auto s = meshopt_analyzeVertexCache(indices.data(), indices.size(), vertices, k, 0, 0);
+      if (k == 16) misses16 = s.vertices_transformed;
+      benchmark::DoNotOptimize(s.vertices_transformed);
+    }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * indices.size()));
+  state.counters["misses_k16"] = static_cast<double>(misses16);
+}
+BENCHMARK(BM_VertexSizes3to64_MeshoptPerSize);
+
+void BM_VertexSizes3to64_RastracePerSize(benchmark::State& state) {
+  const auto& indices = bunny_indices();
+  const auto policy = static_cast<VertexCachePolicy>(state.range(0));
+  for (auto _ : state)
+    for (unsigned k = 3; k <= 64; ++k)
+      benchmark::DoNotOptimize(simulate_vertex_stream(indices, PrimitiveType::TriangleList, policy, k).misses);
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * indices.size()));
+  state.SetLabel(to_string(policy));
+}
+BENCHMARK(BM_VertexSizes3to64_RastracePerSize)
+    ->Arg(static_cast<int>(VertexCachePolicy::Fifo))
+    ->Arg(static_cast<int>(VertexCachePolicy::Lru));
 
 const std::vector<std::uint64_t>& frame_lines(std::uint32_t line_bytes) {
   static std::vector<std::uint64_t> lines;
@@ -145,6 +205,31 @@ void BM_SetAssocLruProfile_64Sets_Ways1to16(benchmark::State& state) {
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * lines.size()));
 }
 BENCHMARK(BM_SetAssocLruProfile_64Sets_Ways1to16);
+
+void BM_Shards_FixedRate1Percent(benchmark::State& state) {
+  const auto& lines = frame_lines(64);
+  for (auto _ : state) {
+    ShardsProfile shards({0.01, 0});
+    shards.access_lines(lines);
+    benchmark::DoNotOptimize(shards.miss_ratio(256));
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * lines.size()));
+}
+BENCHMARK(BM_Shards_FixedRate1Percent);
+
+void BM_MiniSim_Fifo1Percent_8Sizes(benchmark::State& state) {
+  const auto& lines = frame_lines(64);
+  std::vector<CacheConfig> caches;
+  for (std::uint64_t size = 8 * 1024; size <= 1024 * 1024; size *= 2)
+    caches.push_back({size, 64, 0, ReplacementPolicy::Fifo, 1});
+  for (auto _ : state) {
+    MiniSimulations minis(caches, 0.01);
+    minis.access_lines(lines);
+    benchmark::DoNotOptimize(minis.miss_ratio(0));
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * lines.size()));
+}
+BENCHMARK(BM_MiniSim_Fifo1Percent_8Sizes);
 
 // The O(k)-per-access LRU as it was before the recency list: reference for the benchmark only.
 class LinearScanLruBefore {

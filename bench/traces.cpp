@@ -5,6 +5,8 @@
 //     the synthetic frame-like trace of tests/support/synthetic_frame.h, labelled as such
 //   - the two halves of reading a given trace, zstd and column decoding, each alone
 //   - writer throughput
+//   - zstd decompression alone of RASTRACE_BENCH_TRACE's payloads recompressed at other levels
+//     (the writer's level is an option, not part of the format): does any level decode faster?
 // Read benchmarks run with read-ahead off (/ahead:0, one thread) and on (/ahead:1, a second
 // thread): wall-clock time, since the work is on two threads.
 #include <unistd.h>
@@ -187,6 +189,61 @@ void BM_TraceChunkStages_File(benchmark::State& state) {
   state.SetLabel(state.range(0) == 0 ? "zstd only" : "column decoding only");
 }
 BENCHMARK(BM_TraceChunkStages_File)->ArgName("stage")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// zstd alone, one thread, CPU time, on the raw payloads of RASTRACE_BENCH_TRACE compressed at the
+// level given (the writer's default is 3).
+void BM_TraceZstdLevel_File(benchmark::State& state) {
+  const char* path = std::getenv("RASTRACE_BENCH_TRACE");
+  if (!path) {
+    state.SkipWithError("set RASTRACE_BENCH_TRACE to a trace file");
+    return;
+  }
+  const int level = static_cast<int>(state.range(0));
+  struct Payload {
+    std::vector<char> compressed;
+    std::size_t raw = 0;
+    std::uint32_t records = 0;
+  };
+  std::vector<Payload> payloads;
+  std::uint64_t file_records = 0, compressed_bytes = 0;
+  {
+    const TraceReader reader(path);
+    std::ifstream in(path, std::ios::binary);
+    for (const ChunkInfo& c : reader.chunks()) {
+      char header[kChunkHeaderBytes];
+      in.seekg(static_cast<std::streamoff>(c.offset));
+      in.read(header, kChunkHeaderBytes);
+      std::uint32_t stored = 0, raw = 0;
+      std::memcpy(&stored, header + 12, 4);
+      std::memcpy(&raw, header + 16, 4);
+      std::vector<char> original(stored), decoded(raw);
+      in.read(original.data(), stored);
+      ZSTD_decompress(decoded.data(), raw, original.data(), stored);
+      Payload p;
+      p.compressed.resize(ZSTD_compressBound(raw));
+      p.compressed.resize(ZSTD_compress(p.compressed.data(), p.compressed.size(), decoded.data(), raw, level));
+      p.raw = raw;
+      p.records = c.records;
+      compressed_bytes += p.compressed.size();
+      file_records += c.records;
+      payloads.push_back(std::move(p));
+    }
+  }
+  ZSTD_DCtx* dctx = ZSTD_createDCtx();
+  std::vector<char> raw;
+  std::uint64_t records = 0;
+  for (auto _ : state)
+    for (const Payload& p : payloads) {
+      raw.resize(p.raw);
+      benchmark::DoNotOptimize(
+          ZSTD_decompressDCtx(dctx, raw.data(), raw.size(), p.compressed.data(), p.compressed.size()));
+      records += p.records;
+    }
+  ZSTD_freeDCtx(dctx);
+  state.SetItemsProcessed(static_cast<std::int64_t>(records));
+  state.counters["bytes_per_record"] = double(compressed_bytes) / double(file_records);
+}
+BENCHMARK(BM_TraceZstdLevel_File)->ArgName("level")->Arg(-5)->Arg(1)->Arg(3)->Arg(9)->Arg(19)->Unit(benchmark::kMillisecond);
 
 void BM_TraceWrite_Texels(benchmark::State& state) {
   const std::string path = temp("write.rtrace");

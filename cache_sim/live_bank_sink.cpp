@@ -55,8 +55,18 @@ LiveBankSink::LiveBankSink(CacheBankConfig config, TextureLevels textures, Frame
   if (!config_.framebuffer.empty() && (frame_.width == 0 || frame_.height == 0))
     throw InputError("depth and colour caches need the frame's size (a trace's metadata gives its resolution)");
   for (const FramebufferCacheSpec& spec : config_.framebuffer) framebuffer_caches_.emplace_back(spec, frame_);
-  for (const VertexCacheSpec& spec : config_.vertex) vertex_caches_.emplace_back(spec.policy, spec.entries);
-  vertex_misses_.assign(vertex_caches_.size(), 0);
+  for (const VertexCachePolicy policy : {VertexCachePolicy::Fifo, VertexCachePolicy::Lru}) {
+    std::vector<unsigned> sizes;
+    for (const VertexCacheSpec& spec : config_.vertex)
+      if (spec.policy == policy) sizes.push_back(spec.entries);
+    if (!sizes.empty()) vertex_caches_.emplace_back(policy, std::move(sizes));
+  }
+  std::size_t counts[2] = {0, 0};
+  for (const VertexCacheSpec& spec : config_.vertex) {
+    std::size_t bank = 0;
+    while (vertex_caches_[bank].policy() != spec.policy) ++bank;
+    vertex_cache_of_.emplace_back(bank, counts[bank]++);
+  }
 
   // Finds or creates the stream, then the line-size group, of one byte cache.
   const auto attach = [&](const CacheConfig& cache, AddressStream::Kind kind, const LayoutSpec* layout,
@@ -119,9 +129,7 @@ void LiveBankSink::feed_stream(AddressStream& stream) {
     for (std::size_t i = 0; i < stream.addresses.size(); ++i) group.lines[i] = stream.addresses[i] >> group.line_shift;
     if (group.profile) group.profile->access_lines(group.lines);
     if (group.keep_for_opt) {
-      if (group.opt_lines.size() + group.lines.size() > kOptMaxAccesses)
-        throw InputError("opt: the trace has more than " + std::to_string(kOptMaxAccesses) +
-                         " accesses, the most OPT holds in memory; drop opt or shorten the trace");
+      check_opt_capacity(group.opt_lines.size() + group.lines.size(), config_.opt_max_accesses);
       group.opt_lines.insert(group.opt_lines.end(), group.lines.begin(), group.lines.end());
     }
     for (const std::size_t c : group.caches)
@@ -135,13 +143,12 @@ void LiveBankSink::begin_draw(const DrawInfo& draw) {
   assembler_ = PrimitiveAssembler(draw.type);
   strips_in_draw_ = 0;
   if (config_.flush_vertex_cache_per_draw)
-    for (VertexCache& cache : vertex_caches_) cache.clear();
+    for (VertexCacheSizes& caches : vertex_caches_) caches.clear();
 }
 
 void LiveBankSink::on_vertex(std::uint32_t vertex, bool primitive_start) {
   ++shared_.lookups;
   ++shared_.indices_sent;
-  for (std::size_t i = 0; i < vertex_caches_.size(); ++i) vertex_misses_[i] += !vertex_caches_[i].access(vertex);
   if (vertex >= seen_.size()) seen_.resize(std::max<std::size_t>(std::size_t{vertex} + 1, seen_.size() * 2), 0);
   if (seen_[vertex] != draw_serial_ + 1) {
     seen_[vertex] = draw_serial_ + 1;
@@ -162,6 +169,11 @@ void LiveBankSink::on_vertex(std::uint32_t vertex, bool primitive_start) {
 
 void LiveBankSink::vertex_fetches(std::span<const VertexFetch> fetches) {
   if (finished_) throw std::logic_error("LiveBankSink: events after finish");
+  if (!vertex_caches_.empty()) {
+    fetched_.resize(fetches.size());
+    for (std::size_t i = 0; i < fetches.size(); ++i) fetched_[i] = fetches[i].vertex;
+    for (VertexCacheSizes& caches : vertex_caches_) caches.access(fetched_);
+  }
   for (const VertexFetch& f : fetches) on_vertex(f.vertex, f.primitive_start);
   for (const std::size_t s : vertex_buffer_streams_) {
     AddressStream& stream = *streams_[s];
@@ -233,9 +245,9 @@ void LiveBankSink::finish() {
   if (finished_) return;
   finished_ = true;
   vertex_results_.clear();
-  for (std::size_t i = 0; i < vertex_caches_.size(); ++i) {
+  for (const auto& [bank, size] : vertex_cache_of_) {
     VertexStreamStats s = shared_;
-    s.misses = vertex_misses_[i];
+    s.misses = vertex_caches_[bank].misses(size);
     vertex_results_.push_back(s);
   }
   std::vector<CacheStats> all;

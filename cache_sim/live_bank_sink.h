@@ -3,7 +3,8 @@
 // this class, so a live render and a replay of its trace give the same numbers to the miss.
 //
 // What it simulates:
-//   vertex         post-transform vertex caches (FIFO/LRU, k entries) over the vertex fetches,
+//   vertex         post-transform vertex caches (FIFO/LRU, k entries; all sizes of a policy in one
+//                  pass, vertex_cache_sizes.h) over the vertex fetches,
 //                  with the statistics of simulate_vertex_stream(): lookups, misses, drawn
 //                  triangles, degenerate triangles (looked up, not drawn), distinct vertices
 //   texture        byte caches over the texel accesses, mapped to bytes by a texture layout
@@ -27,8 +28,10 @@
 #include "cache_sim/byte_cache.h"
 #include "cache_sim/cache_config.h"
 #include "cache_sim/lru_profile.h"
+#include "cache_sim/opt_cache.h"
 #include "cache_sim/texture_layout.h"
 #include "cache_sim/vertex_cache.h"
+#include "cache_sim/vertex_cache_sizes.h"
 #include "cache_sim/write_back_cache.h"
 #include "traces/sink.h"
 
@@ -75,6 +78,8 @@ struct CacheBankConfig {
   // Vertex ids of different draws index different buffers: start each draw with an empty
   // post-transform cache (as hardware does between draws).
   bool flush_vertex_cache_per_draw = true;
+  // The most accesses an OPT cache buffers (opt_cache.h); more is an InputError stating the limit.
+  std::uint64_t opt_max_accesses = kOptMaxAccesses;
 };
 
 class LiveBankSink final : public EventSink {
@@ -117,10 +122,12 @@ class LiveBankSink final : public EventSink {
   bool finished_ = false;
 
   // Post-transform caches and primitive assembly.
-  std::vector<VertexCache> vertex_caches_;
+  // One bank per policy, every size of that policy in one pass (vertex_cache_sizes.h).
+  std::vector<VertexCacheSizes> vertex_caches_;
+  std::vector<std::pair<std::size_t, std::size_t>> vertex_cache_of_;  // per config entry: bank, size index
+  std::vector<std::uint32_t> fetched_;                                // this batch's vertex ids
   std::vector<VertexStreamStats> vertex_results_;
   VertexStreamStats shared_;  // triangles, degenerates, vertices, indices sent, lookups
-  std::vector<std::uint64_t> vertex_misses_;
   DrawInfo draw_{};
   std::uint32_t draw_serial_ = 0;    // counts begin_draw calls (distinct-vertex stamps)
   std::vector<std::uint32_t> seen_;  // per vertex: draw_serial_ + 1 when referenced in this draw

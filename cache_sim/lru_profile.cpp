@@ -11,27 +11,56 @@ namespace {
 constexpr std::uint64_t kMinTree = 1 << 16;
 }
 
-LruStackProfile::LruStackProfile() : map_(1024), tree_(kMinTree + 1, 0), tree_size_(kMinTree) {}
+LruStackProfile::LruStackProfile() : map_(1024) { rebuild(0); }
+
+void LruStackProfile::rebuild(std::uint64_t live) {
+  // Times 0..live-1 live, room for at least as many new accesses.
+  tree_size_ = std::max<std::uint64_t>(kMinTree, (2 * live + kBlockBits - 1) / kBlockBits * kBlockBits);
+  words_.assign(tree_size_ / 64, 0);
+  for (std::uint64_t t = 0; t < live; ++t) words_[t / 64] |= std::uint64_t{1} << (t % 64);
+  const std::uint64_t block_count = tree_size_ / kBlockBits;
+  blocks_.assign(block_count + 1, 0);
+  for (std::uint64_t b = 0; b < block_count; ++b)
+    for (std::uint64_t w = 0; w < kWordsPerBlock; ++w)
+      blocks_[b + 1] += static_cast<std::int32_t>(std::popcount(words_[b * kWordsPerBlock + w]));
+  // Linear-time Fenwick build from the raw counts.
+  for (std::uint64_t i = 1; i <= block_count; ++i) {
+    const std::uint64_t parent = i + (i & (~i + 1));
+    if (parent <= block_count) blocks_[parent] += blocks_[i];
+  }
+  id_at_time_.resize(tree_size_);
+  live_ = live;
+  now_ = live;
+}
 
 void LruStackProfile::compact() {
   // Renumber the live last-use times 0..live-1 in order, keeping the relative order (which is all
-  // the distances depend on), and leave room for at least as many new accesses.
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> order;
-  order.reserve(last_use_.size());
-  for (std::uint32_t id = 0; id < last_use_.size(); ++id) order.emplace_back(last_use_[id], id);
-  std::sort(order.begin(), order.end());
-  tree_size_ = std::max<std::uint64_t>(kMinTree, 2 * order.size());
-  tree_.assign(tree_size_ + 1, 0);
-  for (std::uint64_t t = 0; t < order.size(); ++t) {
-    last_use_[order[t].second] = t;
-    tree_[t + 1] = 1;
-  }
-  // Linear-time Fenwick build from the raw counts.
-  for (std::uint64_t i = 1; i <= tree_size_; ++i) {
-    const std::uint64_t parent = i + (i & (~i + 1));
-    if (parent <= tree_size_) tree_[parent] += tree_[i];
-  }
-  now_ = order.size();
+  // the distances depend on): the live bits, read in time order, name the ids in that order.
+  std::uint64_t next = 0;
+  for (std::uint64_t w = 0; w < words_.size(); ++w)
+    for (std::uint64_t bits = words_[w]; bits != 0; bits &= bits - 1) {
+      const std::uint32_t id = id_at_time_[w * 64 + static_cast<std::uint64_t>(std::countr_zero(bits))];
+      last_use_[id] = next;
+      id_at_time_[next++] = id;  // next <= the time being read: nothing unread is overwritten
+    }
+  rebuild(next);
+}
+
+#if defined(__x86_64__)
+__attribute__((target_clones("popcnt", "default")))
+#endif
+void LruStackProfile::access_lines(std::span<const std::uint64_t> lines) {
+  for (const std::uint64_t line : lines) access(line);
+}
+
+void LruStackProfile::forget(std::uint64_t line) {
+  const std::uint32_t id = find_line(line);
+  if (id == LineMap::kMissing) return;
+  erase_line(line);
+  set_bit(last_use_[id], false);
+  last_use_[id] = kDead;
+  free_ids_.push_back(id);
+  if (line == last_line_) has_last_ = false;
 }
 
 std::uint64_t LruStackProfile::misses(std::uint64_t lines) const {

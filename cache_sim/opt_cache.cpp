@@ -5,8 +5,18 @@
 #include <vector>
 
 #include "cache_sim/line_map.h"
+#include "core/error.h"
+#include "core/units.h"
 
 namespace rastrace {
+
+void check_opt_capacity(std::uint64_t accesses, std::uint64_t limit) {
+  if (accesses <= limit) return;
+  throw InputError("opt: " + std::to_string(accesses) + " accesses, more than the " + std::to_string(limit) +
+                   " OPT holds in memory (" + std::to_string(kOptBytesPerAccess) + " bytes each, " +
+                   format_byte_size(limit * kOptBytesPerAccess) +
+                   "); drop opt, shorten the trace, or use --sample for the other policies");
+}
 
 CacheStats simulate_opt(const CacheConfig& config, std::span<const std::uint64_t> lines) {
   validate(config);

@@ -14,6 +14,11 @@
 namespace rastrace {
 
 inline constexpr std::uint64_t kOptMaxAccesses = std::uint64_t{1} << 28;
+inline constexpr std::uint64_t kOptBytesPerAccess = 16;
+
+// Throws InputError when OPT would have to hold more than `limit` accesses, stating the limit in
+// accesses and bytes; callers check before they read the trace when they know its length.
+void check_opt_capacity(std::uint64_t accesses, std::uint64_t limit = kOptMaxAccesses);
 
 // Simulates OPT (config.policy is ignored) over line numbers (address >> log2(line size)).
 CacheStats simulate_opt(const CacheConfig& config, std::span<const std::uint64_t> lines);

@@ -7,6 +7,7 @@
 #include <optional>
 #include <thread>
 
+#include "cache_sim/sampled_sweep.h"
 #include "core/enum_names.h"
 #include "core/error.h"
 #include "core/progress.h"
@@ -98,6 +99,7 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
             SweepRow row;
             row.configuration = configuration;
             row.cache = config;
+            row.layout_index = l;
             row.layout = spec.source == SweepSource::Texel          ? layout_name(layouts[l])
                          : spec.source == SweepSource::VertexBuffer ? "stride" + std::to_string(spec.stride)
                                                                     : "-";
@@ -114,6 +116,17 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
           }
   if (!any_valid) throw InputError("sweep: no valid cache configuration among the combinations given");
   if (result.rows.empty()) return result;
+  // OPT buffers the whole line stream: refuse a trace too long for it before reading any of it.
+  if (summary.has_counts && std::any_of(result.rows.begin(), result.rows.end(), [](const SweepRow& r) {
+        return r.cache.policy == ReplacementPolicy::Opt;
+      }))
+    check_opt_capacity(spec.source == SweepSource::Texel          ? summary.texels
+                       : spec.source == SweepSource::VertexBuffer ? summary.vertices
+                                                                  : summary.addresses);
+  if (spec.sample) {
+    run_sampled_rows(trace_path, spec, layouts, summary.metadata.textures, result.rows, show_progress);
+    return result;
+  }
 
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   // Split big groups so every core has work; the split costs one more pass over the trace each.

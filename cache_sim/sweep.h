@@ -7,11 +7,13 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cache_sim/cache_config.h"
 #include "cache_sim/live_bank_sink.h"
+#include "cache_sim/shards.h"
 #include "cache_sim/texture_layout.h"
 
 namespace rastrace {
@@ -44,6 +46,8 @@ struct SweepSpec {
   std::uint64_t seed = 1;
   bool three_c = true;
   SweepShard shard;
+  // Estimate every row from a spatially hashed sample of the lines instead (sampled_sweep.h).
+  std::optional<SampleSpec> sample;
 };
 
 struct SweepRow {
@@ -51,6 +55,11 @@ struct SweepRow {
   std::string layout;  // layout name, "stride32" for vertex buffers, "-" for addresses
   CacheStats stats;
   std::size_t configuration = 0;  // index in the full configuration set (see SweepShard)
+  std::size_t layout_index = 0;   // into SweepSpec::layouts (texel source)
+  // Sampled sweeps only: how the row was estimated ("shards", or "mini" and the scaled cache) and
+  // the expected error of its miss rate (< 0: exact).
+  std::string sampled_as = {};
+  double expected_error = -1;
 };
 
 struct SweepResult {

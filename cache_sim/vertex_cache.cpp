@@ -113,20 +113,14 @@ VertexStreamStats simulate_fifo_list(std::span<const std::uint32_t> indices, uns
 
 }  // namespace
 
-VertexStreamStats simulate_vertex_stream(std::span<const std::uint32_t> indices, PrimitiveType type,
-                                         VertexCachePolicy policy, unsigned entries, RestartIndex restart_index) {
-  VertexCache cache(policy, entries);
-  // 2^32 - entries misses would wrap the 32-bit clock: longer streams take the general path.
-  if (type == PrimitiveType::TriangleList && policy == VertexCachePolicy::Fifo &&
-      indices.size() < std::size_t{0x7FFFFFFF} - entries)
-    return simulate_fifo_list(indices, entries);
+VertexStreamStats vertex_stream_shape(std::span<const std::uint32_t> indices, PrimitiveType type,
+                                      RestartIndex restart_index) {
   VertexStreamStats stats;
   std::vector<bool> seen;
   for (const std::uint32_t index : indices) {
     ++stats.indices_sent;
     if (is_restart(type, restart_index, index)) continue;
     ++stats.lookups;
-    if (!cache.access(index)) ++stats.misses;
     if (index >= seen.size()) seen.resize(static_cast<std::size_t>(index) + 1, false);
     if (!seen[index]) {
       seen[index] = true;
@@ -139,6 +133,19 @@ VertexStreamStats simulate_vertex_stream(std::span<const std::uint32_t> indices,
     else
       ++stats.triangles;
   });
+  return stats;
+}
+
+VertexStreamStats simulate_vertex_stream(std::span<const std::uint32_t> indices, PrimitiveType type,
+                                         VertexCachePolicy policy, unsigned entries, RestartIndex restart_index) {
+  VertexCache cache(policy, entries);
+  // 2^32 - entries misses would wrap the 32-bit clock: longer streams take the general path.
+  if (type == PrimitiveType::TriangleList && policy == VertexCachePolicy::Fifo &&
+      indices.size() < std::size_t{0x7FFFFFFF} - entries)
+    return simulate_fifo_list(indices, entries);
+  VertexStreamStats stats = vertex_stream_shape(indices, type, restart_index);
+  for (const std::uint32_t index : indices)
+    if (!is_restart(type, restart_index, index) && !cache.access(index)) ++stats.misses;
   return stats;
 }
 

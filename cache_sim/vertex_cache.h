@@ -78,6 +78,11 @@ struct VertexStreamStats {
   double indices_per_triangle() const { return triangles ? double(indices_sent) / double(triangles) : 0.0; }
 };
 
+// The statistics of an index stream that no cache changes (misses = 0): lookups, indices sent,
+// distinct vertices, drawn and degenerate triangles.
+VertexStreamStats vertex_stream_shape(std::span<const std::uint32_t> indices, PrimitiveType type,
+                                      RestartIndex restart_index = kNoRestart);
+
 // Runs an index stream through a vertex cache, primitive by primitive as the pipeline does.
 VertexStreamStats simulate_vertex_stream(std::span<const std::uint32_t> indices, PrimitiveType type,
                                          VertexCachePolicy policy, unsigned entries,

@@ -1,5 +1,6 @@
 #include "experiments/cache_report.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -48,6 +49,12 @@ Table byte_cache_table(const std::string& title, std::vector<std::pair<std::stri
                {"compulsory", "compulsory", 0},
                {"capacity", "capacity", 0},
                {"conflict", "conflict", 0}};
+  // A sampled sweep (sweep --sample) says how each row was estimated and its expected error.
+  const bool sampled = std::any_of(rows.begin(), rows.end(), [](const SweepRow& r) { return r.expected_error >= 0; });
+  if (sampled) {
+    t.columns.push_back({"estimated_by", "estimated by", 0});
+    t.columns.push_back({"expected_error", "expected error", 5});
+  }
   for (const SweepRow& r : rows) {
     const CacheStats& s = r.stats;
     std::vector<TableCell> cells = {r.cache.size_bytes, r.cache.line_bytes, r.cache.assoc, to_string(r.cache.policy),
@@ -59,6 +66,10 @@ Table byte_cache_table(const std::string& title, std::vector<std::pair<std::stri
       cells.emplace_back(s.conflict);
     } else {
       cells.resize(13);
+    }
+    if (sampled) {
+      cells.emplace_back(r.sampled_as);
+      cells.emplace_back(r.expected_error);
     }
     t.add_row(std::move(cells));
   }

@@ -7,6 +7,7 @@
 #include "cache_sim/cache_spec.h"
 #include "cache_sim/eviction_charged.h"
 #include "cache_sim/vertex_cache.h"
+#include "cache_sim/vertex_cache_sizes.h"
 #include "core/error.h"
 #include "reorder/strip.h"
 
@@ -70,11 +71,12 @@ Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheT
     Ordering ordering;
     double seconds;
     VertexFetchStats fetch;
+    std::vector<VertexStreamStats> by_size;  // per spec.caches entry, when --target fixes the ordering
   };
   for (const ReorderAlgorithm* algorithm : algorithms) {
     for (const VertexCachePolicy policy : spec.policies) {
       std::map<unsigned, Run> runs;
-      for (const unsigned cache : spec.caches) {
+      for (const unsigned& cache : spec.caches) {
         const unsigned target = spec.target ? spec.target : cache;
         auto found = runs.find(target);
         if (found == runs.end()) {
@@ -89,11 +91,16 @@ Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheT
           const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
           const VertexFetchStats fetch = simulate_vertex_fetch(ordering.indices, ordering.type, ordering.restart_index,
                                                                spec.vertex_bytes, spec.fetch_cache);
-          found = runs.emplace(target, Run{std::move(ordering), seconds, fetch}).first;
+          found = runs.emplace(target, Run{std::move(ordering), seconds, fetch, {}}).first;
         }
         const Ordering& ordering = found->second.ordering;
+        // One ordering for every size (--target): all sizes in one pass over it, the same misses.
+        if (spec.target && found->second.by_size.empty())
+          found->second.by_size = simulate_vertex_stream_sizes(ordering.indices, ordering.type, policy, spec.caches,
+                                                               ordering.restart_index);
         VertexStreamStats stats =
-            simulate_vertex_stream(ordering.indices, ordering.type, policy, cache, ordering.restart_index);
+            spec.target ? found->second.by_size[static_cast<std::size_t>(&cache - spec.caches.data())]
+                        : simulate_vertex_stream(ordering.indices, ordering.type, policy, cache, ordering.restart_index);
         if (spec.eviction_charged)
           stats.misses = eviction_charged_transforms(ordering.indices, ordering.type, cache, ordering.restart_index);
         std::vector<TableCell> row = {

@@ -1,0 +1,247 @@
+#include "cache_sim/shards.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <queue>
+#include <stdexcept>
+
+#include "core/error.h"
+#include "core/units.h"
+
+namespace rastrace {
+
+namespace {
+
+constexpr double kTwo64 = 18446744073709551616.0;
+
+// Scaled distances of the fixed-size variant in log-linear buckets: exact below 2 * kSub, then
+// kSub buckets per octave (relative width 1/kSub), so memory stays constant however small the
+// rate gets.
+constexpr std::uint64_t kSubBits = 8, kSub = std::uint64_t{1} << kSubBits;
+std::size_t bucket_of(std::uint64_t d) {
+  if (d < 2 * kSub) return static_cast<std::size_t>(d);
+  const unsigned octave = static_cast<unsigned>(std::bit_width(d)) - 1 - kSubBits;  // >= 1
+  return static_cast<std::size_t>((octave + 1) * kSub + ((d >> octave) - kSub));
+}
+// The smallest distance of a bucket.
+std::uint64_t bucket_floor(std::size_t b) {
+  if (b < 2 * kSub) return b;
+  const std::uint64_t octave = b / kSub - 1;
+  return (kSub + b % kSub) << octave;
+}
+
+}  // namespace
+
+std::uint64_t sample_threshold(double rate) {
+  if (rate >= 1.0) return ~std::uint64_t{0};
+  return static_cast<std::uint64_t>(std::ldexp(rate, 64));
+}
+
+SampleSpec parse_sample_spec(const std::string& text, const std::string& option) {
+  const auto fail = [&] {
+    throw InputError(option + " '" + text.substr(0, 40) +
+                     "': expected a rate in (0, 1] as a fraction or percentage (0.01, 1%), optionally with a "
+                     "fixed size ,max=LINES (e.g. 1%,max=8192)");
+  };
+  SampleSpec spec;
+  std::string rate = text;
+  if (const std::size_t comma = text.find(','); comma != std::string::npos) {
+    rate = text.substr(0, comma);
+    const std::string rest = text.substr(comma + 1);
+    if (rest.rfind("max=", 0) != 0) fail();
+    try {
+      spec.max_lines = parse_count(rest.substr(4));
+    } catch (const InputError&) {
+      fail();
+    }
+    if (spec.max_lines < 2) fail();
+  }
+  const bool percent = !rate.empty() && rate.back() == '%';
+  if (percent) rate.pop_back();
+  if (rate.empty() || rate.find_first_not_of("0123456789.eE-") != std::string::npos) fail();
+  try {
+    std::size_t used = 0;
+    spec.rate = std::stod(rate, &used) / (percent ? 100.0 : 1.0);
+    if (used != rate.size()) fail();
+  } catch (const std::logic_error&) {
+    fail();
+  }
+  if (!(spec.rate > 0.0 && spec.rate <= 1.0) || spec.rate * kTwo64 < 4.0) fail();
+  return spec;
+}
+
+std::string describe(const SampleSpec& spec) {
+  char rate[32];
+  std::snprintf(rate, sizeof rate, "%g", spec.rate);
+  return spec.max_lines ? std::string("fixed size, at most ") + std::to_string(spec.max_lines) +
+                              " lines, start rate " + rate
+                        : std::string("fixed rate ") + rate;
+}
+
+// One SHARDS estimate over the lines whose hash lies in [lo, hi).
+struct ShardsProfile::Estimate {
+  std::uint64_t lo, hi;
+  bool to_end;  // hi is 2^64 (rate 1 or the upper half at rate 1)
+  std::uint64_t max_lines;
+  LruStackProfile stack;
+  std::priority_queue<std::pair<std::uint64_t, std::uint64_t>> by_hash;  // fixed size: (hash, line)
+  std::vector<double> histogram;  // fixed rate: by sampled distance; fixed size: buckets of scaled distance
+  double cold = 0, total = 0, scale = 1;
+
+  Estimate(std::uint64_t lo_, std::uint64_t hi_, bool to_end_, std::uint64_t max)
+      : lo(lo_), hi(hi_), to_end(to_end_), max_lines(max) {}
+
+  double rate() const { return ((to_end ? kTwo64 : double(hi)) - double(lo)) / kTwo64; }
+  bool takes(std::uint64_t h) const { return h >= lo && (to_end || h < hi); }
+
+  void access(std::uint64_t line, std::uint64_t h) {
+    if (!takes(h)) return;
+    const std::uint64_t d = stack.touch(line);
+    if (d == LruStackProfile::kFirstUse && max_lines) {
+      by_hash.emplace(h, line);
+      if (by_hash.size() > max_lines) {
+        const auto [top_hash, top_line] = by_hash.top();
+        by_hash.pop();
+        stack.forget(top_line);
+        const double before = rate();
+        hi = top_hash;
+        to_end = false;
+        scale *= rate() / before;
+        if (top_line == line) return;  // its own hash is now above the threshold
+      }
+    }
+    const double weight = 1.0 / scale;
+    total += weight;
+    if (d == LruStackProfile::kFirstUse) {
+      cold += weight;
+      return;
+    }
+    const std::size_t b =
+        max_lines ? bucket_of(static_cast<std::uint64_t>(double(d) / rate())) : static_cast<std::size_t>(d);
+    if (b >= histogram.size()) histogram.resize(b + 1, 0.0);
+    histogram[b] += weight;
+  }
+
+  // Estimated misses (in sampled, rescaled units) of a fully associative LRU cache of C lines.
+  double misses(std::uint64_t cache_lines) const {
+    double misses = cold;
+    if (max_lines == 0) {
+      // A sampled access at sampled distance d stands for distance d / R: a hit when d < C * R.
+      const double limit = double(cache_lines) * rate();
+      const std::size_t first = static_cast<std::size_t>(std::ceil(limit));
+      for (std::size_t d = first; d < histogram.size(); ++d) misses += histogram[d];
+      return misses;
+    }
+    for (std::size_t b = 0; b < histogram.size(); ++b) {
+      const double low = double(bucket_floor(b)), high = double(bucket_floor(b + 1));
+      if (low >= double(cache_lines))
+        misses += histogram[b];
+      else if (high > double(cache_lines))  // the bucket straddles C: its share above C
+        misses += histogram[b] * (high - double(cache_lines)) / (high - low);
+    }
+    return misses;
+  }
+
+  double miss_ratio(std::uint64_t cache_lines, std::uint64_t accesses) const {
+    // Fixed rate: normalised by the expected sampled accesses (SHARDS_adj); fixed size: by the
+    // rescaled total.
+    const double denominator = max_lines ? total * scale : double(accesses) * rate();
+    if (denominator <= 0) return 0.0;
+    const double ratio = misses(cache_lines) * (max_lines ? scale : 1.0) / denominator;
+    return std::clamp(ratio, 0.0, 1.0);
+  }
+};
+
+ShardsProfile::ShardsProfile(SampleSpec spec) : spec_(spec) {
+  const std::uint64_t threshold = sample_threshold(spec.rate);
+  const bool all = spec.rate >= 1.0;
+  const std::uint64_t half = all ? std::uint64_t{1} << 63 : threshold / 2;
+  const std::uint64_t half_max = spec.max_lines ? std::max<std::uint64_t>(1, spec.max_lines / 2) : 0;
+  full_ = std::make_unique<Estimate>(0, threshold, all, spec.max_lines);
+  half_[0] = std::make_unique<Estimate>(0, half, false, half_max);
+  half_[1] = std::make_unique<Estimate>(half, threshold, all, half_max);
+}
+
+ShardsProfile::~ShardsProfile() = default;
+
+void ShardsProfile::access_lines(std::span<const std::uint64_t> lines) {
+  accesses_ += lines.size();
+  for (const std::uint64_t line : lines) {
+    const std::uint64_t h = sample_hash(line);
+    if (!full_->takes(h)) continue;  // most accesses at a low rate
+    full_->access(line, h);
+    half_[0]->access(line, h);
+    half_[1]->access(line, h);
+  }
+}
+
+double ShardsProfile::rate() const { return full_->rate(); }
+double ShardsProfile::sampled_accesses() const { return full_->total * full_->scale; }
+std::uint64_t ShardsProfile::tracked_lines() const { return full_->stack.live_lines(); }
+
+double ShardsProfile::miss_ratio(std::uint64_t cache_lines) const { return full_->miss_ratio(cache_lines, accesses_); }
+
+double ShardsProfile::expected_error(std::uint64_t cache_lines) const {
+  return std::abs(half_[0]->miss_ratio(cache_lines, accesses_) - half_[1]->miss_ratio(cache_lines, accesses_)) / 2;
+}
+
+CacheConfig scale_cache(const CacheConfig& config, double rate) {
+  CacheConfig scaled = config;
+  if (config.assoc == 0) {
+    const std::uint64_t lines = std::max<std::uint64_t>(1, std::llround(double(config.lines()) * rate));
+    scaled.size_bytes = lines * config.line_bytes;
+  } else {
+    const std::uint64_t sets = std::max<std::uint64_t>(1, std::llround(double(config.sets()) * rate));
+    scaled.size_bytes = sets * config.assoc * config.line_bytes;
+  }
+  return scaled;
+}
+
+struct MiniSimulations::Mini {
+  CacheConfig scaled;
+  std::unique_ptr<ByteCache> cache[3];  // full rate, half A, half B (null: the half scales to nothing)
+};
+
+MiniSimulations::MiniSimulations(const std::vector<CacheConfig>& caches, double rate)
+    : rate_(rate), threshold_(sample_threshold(rate)), half_threshold_(rate >= 1.0 ? std::uint64_t{1} << 63 : threshold_ / 2) {
+  for (const CacheConfig& config : caches) {
+    validate(config);
+    if (config.policy == ReplacementPolicy::Opt)
+      throw InputError("sampled sweep: opt has no miniature simulation here; drop opt or --sample");
+    Mini mini;
+    mini.scaled = scale_cache(config, rate);
+    mini.cache[0] = std::make_unique<ByteCache>(mini.scaled);
+    for (int h = 1; h < 3; ++h) mini.cache[h] = std::make_unique<ByteCache>(scale_cache(config, rate / 2));
+    minis_.push_back(std::move(mini));
+  }
+}
+
+MiniSimulations::~MiniSimulations() = default;
+
+void MiniSimulations::access_lines(std::span<const std::uint64_t> lines) {
+  accesses_ += lines.size();
+  for (auto& s : sampled_) s.clear();
+  const bool all = rate_ >= 1.0;
+  for (const std::uint64_t line : lines) {
+    const std::uint64_t h = sample_hash(line);
+    if (!all && h >= threshold_) continue;
+    sampled_[0].push_back(line);
+    sampled_[h < half_threshold_ ? 1 : 2].push_back(line);
+  }
+  for (Mini& mini : minis_)
+    for (int h = 0; h < 3; ++h) mini.cache[h]->access_lines(sampled_[h]);
+}
+
+double MiniSimulations::miss_ratio(std::size_t cache) const {
+  return minis_[cache].cache[0]->stats().miss_rate();
+}
+
+double MiniSimulations::expected_error(std::size_t cache) const {
+  return std::abs(minis_[cache].cache[1]->stats().miss_rate() - minis_[cache].cache[2]->stats().miss_rate()) / 2;
+}
+
+const CacheConfig& MiniSimulations::scaled(std::size_t cache) const { return minis_[cache].scaled; }
+
+}  // namespace rastrace
