@@ -1,8 +1,9 @@
 // `rastrace vcache MESH --algo all|a,b,c --cache entries=8/12/16/20/24/32,policy=fifo/lru [--target K]
-//  --format md|csv|latex|json [--no-time] [--accounting misses|evictions]`: the post-transform vertex cache under every
-//  ordering.
+//  --format md|csv|latex|json [--no-time] [--accounting misses|evictions] [--miss-image FILE]`: the post-transform
+//  vertex cache under every ordering.
 // One row per algorithm, policy and cache size: ACMR, ATVR, misses, indices per triangle, Hoppe's
-// bandwidth (ACMR * 32 + indices per triangle * 2 bytes per triangle) and the ordering's run time.
+// bandwidth (ACMR * 32 + indices per triangle * 2 bytes per triangle, restart indices counted) and
+// the ordering's run time. --miss-image writes the mesh with each face coloured by its misses.
 // An algorithm orders for the simulated cache unless --target fixes the size it orders for.
 #include <algorithm>
 #include <iostream>
@@ -29,6 +30,7 @@ struct VcacheOptions {
   std::string format = "md";
   bool no_time = false;
   std::string accounting = "misses";
+  std::string miss_image;
 };
 
 void run_vcache(const VcacheOptions& options) {
@@ -54,6 +56,7 @@ void run_vcache(const VcacheOptions& options) {
   if (options.accounting != "misses" && options.accounting != "evictions")
     throw InputError("--accounting '" + options.accounting + "': expected misses or evictions");
   spec.eviction_charged = options.accounting == "evictions";
+  spec.miss_image = options.miss_image;
   const Mesh mesh = load_mesh_spec(options.mesh);
   std::cout << render_table(vcache_table(mesh, options.mesh, spec), format);
 }
@@ -82,13 +85,17 @@ void add_vcache_command(CLI::App& app) {
                    "misses (true FIFO/LRU misses) or evictions (transforms as NVIDIA Mesh Tools charged "
                    "them, as in Castano's grid tables; FIFO only)")
       ->capture_default_str();
+  command->add_option("--miss-image", options->miss_image,
+                      "Also write a PNG of the mesh, each face coloured by how many of its vertices missed (0 green, 1 "
+                      "yellow, 2 orange, 3 red); needs one algorithm and one cache");
   command->add_flag("--no-time", options->no_time, "Leave out the run-time column so outputs compare byte for byte");
   command->footer(
       "Examples:\n"
       "  rastrace vcache grid:16x16 --algo scanline,grid,tipsy --cache entries=12/16/20\n"
       "  rastrace vcache data/meshes/fandisk.off --algo all --cache entries=16,policy=fifo/lru --format csv --no-time\n"
       "  rastrace vcache grid:16x16 --algo grid --target 8 --cache entries=8/16\n"
-      "  rastrace vcache grid:16x16 --algo scanline,grid --cache entries=12/16/20 --accounting evictions");
+      "  rastrace vcache grid:16x16 --algo scanline,grid --cache entries=12/16/20 --accounting evictions\n"
+      "  rastrace vcache data/meshes/fandisk.off --algo kcache --cache entries=16 --miss-image fandisk-misses.png");
   command->callback([options] { run_vcache(*options); });
 }
 

@@ -1,6 +1,13 @@
 // The post-transform vertex cache under each ordering, as `rastrace vcache` and the report print
 // it: one row per algorithm, policy and cache size with ACMR, ATVR, misses, indices per triangle,
-// Hoppe's bandwidth (ACMR * 32 + indices per triangle * 2 bytes per triangle) and run time.
+// strips, Hoppe's bandwidth and run time.
+//
+// Bandwidth is Hoppe 1999's equation 1, bytes per triangle = 32 r + 2 b: 32 bytes per vertex
+// shaded (r = ACMR) and 2 per index sent (b = indices per triangle). b counts every index in the
+// stream, the restart index included, so a strip restart is charged: a new strip costs its restart
+// index and the two indices that prime it, 6 bytes, the per-strip term of Hoppe's section 6 cost
+// (32 bytes per miss + 6 per strip); a swap's repeated index costs 2. A triangle list sends 3
+// indices per triangle (6 bytes).
 #pragma once
 
 #include <cstdint>
@@ -24,6 +31,9 @@ struct VcacheTableSpec {
   // Count transforms as NVIDIA Mesh Tools charged them (cache_sim/eviction_charged.h), which is
   // how Castano's grid tables were counted; FIFO only. False: true misses.
   bool eviction_charged = false;
+  // Non-empty: also write the per-face miss image (experiments/miss_image.h) of the one ordering
+  // and cache the table has (InputError unless one algorithm, one policy and one size).
+  std::string miss_image;
 };
 
 // Throws InputError for an unknown algorithm, a cache of 0 entries, or eviction-charged LRU.
