@@ -1,8 +1,9 @@
 // `rastrace vcache MESH --algo all|a,b,c --cache entries=8/12/16/20/24/32,policy=fifo/lru [--target K]
-//  --format md|csv|latex|json [--no-time] [--accounting misses|evictions] [--vertex-bytes 32] [--fetch meshopt|SPEC]`:
-//  the post-transform vertex cache and the vertex-buffer fetch under every ordering.
+//  --format md|csv|latex|json [--no-time] [--accounting misses|evictions] [--vertex-bytes 32] [--fetch meshopt|SPEC]
+//  [--miss-image FILE]`: the post-transform vertex cache and the vertex-buffer fetch under every ordering.
 // One row per algorithm, policy and cache size: ACMR, ATVR, misses, indices per triangle, Hoppe's
-// bandwidth (ACMR * 32 + indices per triangle * 2 bytes per triangle) and the ordering's run time.
+// bandwidth (ACMR * 32 + indices per triangle * 2 bytes per triangle, restart indices counted) and
+// the ordering's run time. --miss-image writes the mesh with each face coloured by its misses.
 // An algorithm orders for the simulated cache unless --target fixes the size it orders for.
 #include <algorithm>
 #include <iostream>
@@ -32,6 +33,7 @@ struct VcacheOptions {
   std::string accounting = "misses";
   std::uint32_t vertex_bytes = 32;
   std::string fetch = "meshopt";
+  std::string miss_image;
 };
 
 void run_vcache(const VcacheOptions& options) {
@@ -60,6 +62,7 @@ void run_vcache(const VcacheOptions& options) {
   if (options.vertex_bytes == 0) throw InputError("--vertex-bytes 0: expected at least 1 byte per vertex");
   spec.vertex_bytes = options.vertex_bytes;
   spec.fetch_cache = parse_fetch_cache(options.fetch, "--fetch");
+  spec.miss_image = options.miss_image;
   const Mesh mesh = load_mesh_spec(options.mesh);
   std::cout << render_table(vcache_table(mesh, options.mesh, spec), format);
 }
@@ -95,6 +98,9 @@ void add_vcache_command(CLI::App& app) {
                    "The vertex-buffer cache of the fetch columns: meshopt (meshopt_analyzeVertexFetch's direct-mapped "
                    "128 KiB, 64-byte lines) or a byte-cache spec, e.g. size=16KiB,line=64B,assoc=4")
       ->capture_default_str();
+  command->add_option("--miss-image", options->miss_image,
+                      "Also write a PNG of the mesh, each face coloured by how many of its vertices missed (0 green, 1 "
+                      "yellow, 2 orange, 3 red); needs one algorithm and one cache");
   command->add_flag("--no-time", options->no_time, "Leave out the run-time column so outputs compare byte for byte");
   command->footer(
       "Examples:\n"
@@ -102,7 +108,8 @@ void add_vcache_command(CLI::App& app) {
       "  rastrace vcache data/meshes/fandisk.off --algo all --cache entries=16,policy=fifo/lru --format csv --no-time\n"
       "  rastrace vcache grid:16x16 --algo grid --target 8 --cache entries=8/16\n"
       "  rastrace vcache grid:16x16 --algo scanline,grid --cache entries=12/16/20 --accounting evictions\n"
-      "  rastrace vcache data/meshes/bunny00.off --algo original,tipsy --vertex-bytes 48 --fetch size=32KiB,line=64B,assoc=4");
+      "  rastrace vcache data/meshes/bunny00.off --algo original,tipsy --vertex-bytes 48 --fetch size=32KiB,line=64B,assoc=4\n"
+      "  rastrace vcache data/meshes/fandisk.off --algo kcache --cache entries=16 --miss-image fandisk-misses.png");
   command->callback([options] { run_vcache(*options); });
 }
 

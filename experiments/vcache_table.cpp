@@ -9,6 +9,7 @@
 #include "cache_sim/vertex_cache.h"
 #include "cache_sim/vertex_cache_sizes.h"
 #include "core/error.h"
+#include "experiments/miss_image.h"
 #include "reorder/strip.h"
 
 namespace rastrace {
@@ -37,6 +38,11 @@ Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheT
       if (policy != VertexCachePolicy::Fifo)
         throw InputError("--accounting evictions models NVIDIA Mesh Tools' FIFO: expected --policy fifo");
   const std::vector<const ReorderAlgorithm*> algorithms = select_algorithms(spec.algorithms, mesh);
+  if (!spec.miss_image.empty() && (algorithms.size() != 1 || spec.policies.size() != 1 || spec.caches.size() != 1))
+    throw InputError("--miss-image " + spec.miss_image + ": the image shows one ordering in one cache: expected one " +
+                     "algorithm and one cache size and policy, got " + std::to_string(algorithms.size()) +
+                     " algorithms, " + std::to_string(spec.caches.size()) + " sizes and " +
+                     std::to_string(spec.policies.size()) + " policies");
 
   Table table;
   table.title = "Post-transform vertex cache: " + mesh_spec;
@@ -45,7 +51,7 @@ Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheT
                       {"mesh_vertices", mesh.vertex_count()},
                       {"seed", static_cast<std::int64_t>(spec.seed)},
                       {"bandwidth_formula", "acmr * " + std::to_string(spec.vertex_bytes) +
-                                                " + indices_per_triangle * 2 bytes/triangle"},
+                                                " + indices_per_triangle * 2 bytes/triangle (restart indices count)"},
                       {"vertex_bytes", spec.vertex_bytes},
                       {"fetch_cache", format_cache_spec(spec.fetch_cache)},
                       {"accounting", spec.eviction_charged ? "evictions (NVIDIA Mesh Tools)" : "misses"}};
@@ -61,6 +67,7 @@ Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheT
                    {"atvr", "ATVR", 3},
                    {"indices_per_triangle", "indices/triangle", 3},
                    {"vertices_sent", "vertices sent", 0},  // Yang et al.'s strip cost (reorder/strip.h)
+                   {"restarts", "restarts", 0},            // restart indices sent (strips after the first)
                    {"bandwidth", "bytes/triangle", 2},
                    {"fetch_bytes", "bytes fetched", 0},  // vertex-buffer fetch (cache_sim/vertex_fetch.h)
                    {"overfetch", "overfetch", 3}};
@@ -115,11 +122,14 @@ Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheT
             stats.atvr(),
             stats.indices_per_triangle(),
             strip_stats(ordering.indices, ordering.type, ordering.restart_index).vertices_sent,
+            stats.indices_sent - stats.lookups,
             stats.acmr() * spec.vertex_bytes + stats.indices_per_triangle() * 2.0,
             found->second.fetch.bytes_fetched,
             found->second.fetch.overfetch()};
         if (spec.with_time) row.emplace_back(found->second.seconds);
         table.add_row(std::move(row));
+        if (!spec.miss_image.empty())
+          write_miss_image(mesh, face_miss_counts(mesh, ordering, policy, cache), spec.miss_image);
       }
     }
   }

@@ -1,7 +1,13 @@
 // The post-transform vertex cache under each ordering, as `rastrace vcache` and the report print
 // it: one row per algorithm, policy and cache size with ACMR, ATVR, misses, indices per triangle,
-// Hoppe's bandwidth (ACMR * 32 + indices per triangle * 2 bytes per triangle), the vertex-buffer
-// bytes fetched and overfetch, and run time.
+// strips, Hoppe's bandwidth, the vertex-buffer bytes fetched and overfetch, and run time.
+//
+// Bandwidth is Hoppe 1999's equation 1, bytes per triangle = 32 r + 2 b: vertex_bytes (32 by default) per vertex
+// shaded (r = ACMR) and 2 per index sent (b = indices per triangle). b counts every index in the
+// stream, the restart index included, so a strip restart is charged: a new strip costs its restart
+// index and the two indices that prime it, 6 bytes, the per-strip term of Hoppe's section 6 cost
+// (32 bytes per miss + 6 per strip); a swap's repeated index costs 2. A triangle list sends 3
+// indices per triangle (6 bytes).
 #pragma once
 
 #include <cstdint>
@@ -30,6 +36,9 @@ struct VcacheTableSpec {
   // the byte cache the ordering's index stream reads the vertex buffer through.
   std::uint32_t vertex_bytes = 32;
   CacheConfig fetch_cache = meshopt_fetch_cache();
+  // Non-empty: also write the per-face miss image (experiments/miss_image.h) of the one ordering
+  // and cache the table has (InputError unless one algorithm, one policy and one size).
+  std::string miss_image;
 };
 
 // The algorithms of an --algo list: "all" (those that apply to the mesh) or "a,b,c"; throws

@@ -2,7 +2,6 @@
 #include "reorder/local_opt.h"
 
 #include <algorithm>
-#include <bit>
 #include <chrono>
 #include <cstdint>
 #include <numeric>
@@ -21,34 +20,72 @@ namespace {
 constexpr int kCaches = 3;                 // sizes k-1, k, k+1
 constexpr std::int64_t kStripCost = 6000;  // 6 bytes per strip, scaled by 1000
 
-// A FIFO of at most `cap` vertices for the short re-simulations (k is small: a scan is cheap).
-class SmallFifo {
+// The FIFO of the short re-simulations, as insertion time stamps (a vertex is resident while fewer
+// than `cap` misses happened since it was inserted): O(1) per access for any cache size. clear()
+// moves the clock past every stamp, so no array is ever cleared.
+class StampFifo {
  public:
-  void reset(unsigned cap) {
+  void reset(unsigned cap, std::size_t vertices) {
     cap_ = cap;
-    slots_.assign(cap, 0);
-    count_ = 0;
-    next_ = 0;
+    stamps_.assign(vertices, 0);
+    clock_ = std::uint64_t{cap} + 1;
   }
-  void clear() {
-    count_ = 0;
-    next_ = 0;
-  }
+  void clear() { clock_ += std::uint64_t{cap_} + 1; }
   bool access(std::uint32_t v) {
-    for (unsigned i = 0; i < count_; ++i)
-      if (slots_[i] == v) return true;
-    push(v);
+    if (clock_ - stamps_[v] <= cap_) return true;
+    stamps_[v] = clock_++;
     return false;
   }
-  void push(std::uint32_t v) {
-    slots_[next_] = v;
-    next_ = next_ + 1 == cap_ ? 0 : next_ + 1;
-    if (count_ < cap_) ++count_;
-  }
+  void push(std::uint32_t v) { stamps_[v] = clock_++; }
 
  private:
-  std::vector<std::uint32_t> slots_;
-  unsigned cap_ = 0, count_ = 0, next_ = 0;
+  std::vector<std::uint64_t> stamps_;
+  std::uint64_t clock_ = 1;
+  unsigned cap_ = 0;
+};
+
+// Misses in a mask of at most 3 accesses (a table: the build does not assume a popcount instruction).
+inline unsigned miss_count(std::uint8_t mask) {
+  constexpr std::uint8_t kBits[8] = {0, 1, 1, 2, 1, 2, 2, 3};
+  return kBits[mask & 7u];
+}
+
+// The vertices a face reads in the strip stream, in order (see Local::accesses).
+struct AccessList {
+  std::uint32_t v[3] = {0, 0, 0};
+  std::uint32_t n = 0;
+};
+
+// Sums of per-position values over ranges, with point updates (a Fenwick tree): the reverse minus
+// forward cost of the faces evaluate() skips inside a reversed piece, kept exact as F changes
+// without an O(m) pass per applied perturbation.
+class PrefixSums {
+ public:
+  void assign(const std::vector<std::int64_t>& values) {
+    value_ = values;
+    const std::size_t n = values.size();
+    tree_.assign(n + 1, 0);
+    for (std::size_t i = 1; i <= n; ++i) tree_[i] += values[i - 1];
+    for (std::size_t i = 1; i <= n; ++i)
+      if (const std::size_t j = i + (i & (~i + 1)); j <= n) tree_[j] += tree_[i];
+  }
+  void set(std::size_t i, std::int64_t value) {
+    const std::int64_t delta = value - value_[i];
+    if (delta == 0) return;
+    value_[i] = value;
+    for (std::size_t j = i + 1; j < tree_.size(); j += j & (~j + 1)) tree_[j] += delta;
+  }
+  // The sum of the values at positions [lo, hi).
+  std::int64_t sum(std::size_t lo, std::size_t hi) const { return prefix(hi) - prefix(lo); }
+
+ private:
+  std::int64_t prefix(std::size_t end) const {
+    std::int64_t total = 0;
+    for (std::size_t j = end; j > 0; j -= j & (~j + 1)) total += tree_[j];
+    return total;
+  }
+  std::vector<std::int64_t> value_;
+  std::vector<std::int64_t> tree_;
 };
 
 // One perturbation as F' = concatenation of ranges of F (reversed or not), at most 5 pieces.
@@ -95,11 +132,13 @@ class Local {
       fwd_[c].assign(t_.face_count, 0);
       rev_[c].assign(t_.face_count, 0);
       stamp_[c].assign(t_.vertex_count, 0);
-      fifo_[c].reset(std::max(size_[c], 1u));
+      fifo_[c].reset(std::max(size_[c], 1u), t_.vertex_count);
     }
+    fwd_list_.assign(t_.face_count, AccessList{});
+    rev_list_.assign(t_.face_count, AccessList{});
+    found_.assign(*std::max_element(size_, size_ + kCaches), 0);
     fwd_cost_.assign(t_.face_count, 0);
     rev_cost_.assign(t_.face_count, 0);
-    rev_prefix_.assign(m_ + 1, 0);
     face_mark_.assign(t_.face_count, 0);
     recompute();
   }
@@ -225,7 +264,7 @@ class Local {
 
   std::int64_t weighted(const std::uint8_t masks[kCaches]) const {
     std::int64_t cost = 0;
-    for (int c = 0; c < kCaches; ++c) cost += weight_[c] * std::popcount(unsigned(masks[c]));
+    for (int c = 0; c < kCaches; ++c) cost += weight_[c] * miss_count(masks[c]);
     return cost;
   }
 
@@ -238,8 +277,10 @@ class Local {
         const std::int64_t q = dir == 0 ? i : m_ - 1 - i;
         const std::uint32_t f = F_[std::size_t(q)];
         const std::uint32_t prev = at(dir == 0 ? q - 1 : q + 1), next = at(dir == 0 ? q + 1 : q - 1);
-        std::uint32_t list[3];
-        const unsigned n = accesses(at(dir == 0 ? q - 2 : q + 2), prev, f, next, list);
+        AccessList& stored = (dir == 0 ? fwd_list_ : rev_list_)[f];
+        stored.n = accesses(at(dir == 0 ? q - 2 : q + 2), prev, f, next, stored.v);
+        const std::uint32_t* list = stored.v;
+        const unsigned n = stored.n;
         std::uint8_t masks[kCaches] = {0, 0, 0};
         for (int c = 0; c < kCaches; ++c) {
           if (size_[c] == 0) continue;
@@ -254,13 +295,22 @@ class Local {
         (dir == 0 ? fwd_cost_ : rev_cost_)[f] = weighted(masks);
       }
     }
-    cost_ = 0;
+    cost_ = strip_cost_ * strip_starts(0, std::int64_t(m_) - 1);
+    std::vector<std::int64_t> skipped(m_);
     for (std::uint32_t q = 0; q < m_; ++q) {
       const std::uint32_t f = F_[q];
       cost_ += fwd_cost_[f];
-      rev_prefix_[q + 1] = rev_prefix_[q] + rev_cost_[f] - fwd_cost_[f];
-      if (q == 0 || !continues(F_[q - 1], f)) cost_ += strip_cost_;
+      skipped[q] = rev_cost_[f] - fwd_cost_[f];
     }
+    rev_minus_fwd_.assign(skipped);
+  }
+
+  // Faces at F positions [lo, hi] that start a strip.
+  std::int64_t strip_starts(std::int64_t lo, std::int64_t hi) const {
+    std::int64_t starts = 0;
+    for (std::int64_t q = std::max<std::int64_t>(lo, 0); q <= std::min<std::int64_t>(hi, std::int64_t(m_) - 1); ++q)
+      starts += q == 0 || !continues(F_[std::size_t(q) - 1], F_[std::size_t(q)]);
+    return starts;
   }
 
   // Loads the caches with the state just before F position p in the forward traversal (or, when
@@ -268,19 +318,18 @@ class Local {
   void load(std::int64_t p, bool reverse) {
     for (int c = 0; c < kCaches; ++c) {
       if (size_[c] == 0) continue;
-      std::uint32_t found[256];
+      std::uint32_t* found = found_.data();
       unsigned n = 0;
-      const unsigned want = std::min(size_[c], 256u);
+      const unsigned want = size_[c];
+      const std::vector<AccessList>& lists = reverse ? rev_list_ : fwd_list_;
       for (std::int64_t q = reverse ? p + 1 : p - 1; q >= 0 && q < std::int64_t(m_) && n < want;
            q += reverse ? 1 : -1) {
         const std::uint32_t f = F_[std::size_t(q)];
         const std::uint8_t mask = (reverse ? rev_ : fwd_)[c][f];
         if (!mask) continue;
-        std::uint32_t list[3];
-        const unsigned count =
-            accesses(at(reverse ? q + 2 : q - 2), at(reverse ? q + 1 : q - 1), f, at(reverse ? q - 1 : q + 1), list);
-        for (unsigned j = count; j-- > 0 && n < want;)
-          if (mask & (1u << j)) found[n++] = list[j];
+        const AccessList& list = lists[f];
+        for (unsigned j = list.n; j-- > 0 && n < want;)
+          if (mask & (1u << j)) found[n++] = list.v[j];
       }
       fifo_[c].clear();
       for (unsigned j = n; j-- > 0;) fifo_[c].push(found[j]);
@@ -395,17 +444,19 @@ class Local {
       const std::uint32_t f = F_[std::size_t(q)];
       const std::uint32_t before_prev = prime_at(seg, count, j - 2);
       const std::uint32_t prev = prime_at(seg, count, j - 1), next = prime_at(seg, count, j + 1);
-      std::uint32_t list[3];
-      const unsigned n = accesses(before_prev, prev, f, next, list);
+      const bool same_context = g.reversed ? prev == at(q + 1) && next == at(q - 1) && before_prev == at(q + 2)
+                                           : prev == at(q - 1) && next == at(q + 1) && before_prev == at(q - 2);
+      // Away from the slice points a face reads what it reads in F (or in F's reverse traversal).
+      AccessList fresh;
+      if (!same_context) fresh.n = accesses(before_prev, prev, f, next, fresh.v);
+      const AccessList& list = same_context ? (g.reversed ? rev_list_ : fwd_list_)[f] : fresh;
       std::uint8_t masks[kCaches] = {0, 0, 0};
       for (int c = 0; c < kCaches; ++c) {
         if (size_[c] == 0) continue;
-        for (unsigned a = 0; a < n; ++a)
-          if (!fifo_[c].access(list[a])) masks[c] |= std::uint8_t(1u << a);
+        for (unsigned a = 0; a < list.n; ++a)
+          if (!fifo_[c].access(list.v[a])) masks[c] |= std::uint8_t(1u << a);
       }
       delta += weighted(masks) - fwd_cost_[f];
-      const bool same_context = g.reversed ? prev == at(q + 1) && next == at(q - 1) && before_prev == at(q + 2)
-                                           : prev == at(q - 1) && next == at(q + 1) && before_prev == at(q - 2);
       bool same = same_context;
       for (int c = 0; c < kCaches && same; ++c) same = masks[c] == (g.reversed ? rev_ : fwd_)[c][f];
       if (!same) {
@@ -414,7 +465,7 @@ class Local {
       }
       bool synced = true;
       for (int c = 0; c < kCaches; ++c) {
-        sync[c] += unsigned(std::popcount(unsigned(masks[c])));
+        sync[c] += unsigned(miss_count(masks[c]));
         synced &= sync[c] >= size_[c];
       }
       if (!synced) continue;
@@ -425,7 +476,7 @@ class Local {
       if (j + 1 < end) {
         if (g.reversed) {
           // Skipped F positions lo+1 .. q-1 keep their reverse-traversal costs.
-          delta += rev_prefix_[std::size_t(q)] - rev_prefix_[std::size_t(g.lo) + 1];
+          delta += rev_minus_fwd_.sum(std::size_t(g.lo) + 1, std::size_t(q));
           load(g.lo, true);
         } else {
           load(g.hi, false);
@@ -489,8 +540,7 @@ class Local {
     const std::uint32_t f = F_[x];
     const std::uint32_t prev = at(std::int64_t(x) - 1), next = at(std::int64_t(x) + 1);
     if (!continues(prev, f) || !continues(f, next)) return false;  // strip ends are always tried
-    const int misses = std::popcount(unsigned(fwd_[1][prev])) + std::popcount(unsigned(fwd_[1][f])) +
-                       std::popcount(unsigned(fwd_[1][next]));
+    const unsigned misses = miss_count(fwd_[1][prev]) + miss_count(fwd_[1][f]) + miss_count(fwd_[1][next]);
     return misses < 3;
   }
 
@@ -505,21 +555,33 @@ class Local {
     const std::int64_t hi = !last.reversed && last.start == last.lo && last.hi == m_ - 1 ? std::int64_t(last.start) - 1
                                                                                          : std::int64_t(m_) - 1;
     const std::int64_t before = cost_;
-    scratch_.resize(m_);
+    old_.assign(F_.begin() + lo, F_.begin() + hi + 1);
+    new_.clear();
     for (int i = 0; i < count; ++i)
-      for (std::uint32_t j = seg[i].start; j < seg[i].start + seg[i].size(); ++j) scratch_[j] = face_in(F_, seg[i], j);
-    F_.swap(scratch_);
-    resimulate(lo, hi);
+      for (std::uint32_t j = seg[i].start; j < seg[i].start + seg[i].size(); ++j)
+        if (std::int64_t(j) >= lo && std::int64_t(j) <= hi) new_.push_back(face_in(F_, seg[i], j));
+    replace(lo, hi, new_);
     if (cost_ < before) return true;
-    F_.swap(scratch_);
-    resimulate(lo, hi);
+    replace(lo, hi, old_);
     return false;
+  }
+
+  // Writes faces into F positions [lo, hi] and brings the stored state and the cost up to date.
+  void replace(std::int64_t lo, std::int64_t hi, const std::vector<std::uint32_t>& faces) {
+    cost_ -= strip_cost_ * strip_starts(lo, hi + 1);
+    std::copy(faces.begin(), faces.end(), F_.begin() + lo);
+    cost_ += strip_cost_ * strip_starts(lo, hi + 1);
+    resimulate(lo, hi);
   }
 
   // After F changed between positions lo and hi: re-simulates forwards from just before lo and
   // backwards from just after hi, each until the caches agree with the stored bits again.
   void resimulate(std::int64_t lo, std::int64_t hi) {
-    for (std::int64_t q = lo; q <= hi; ++q) pos_[F_[std::size_t(q)]] = std::uint32_t(q);
+    for (std::int64_t q = lo; q <= hi; ++q) {
+      const std::uint32_t f = F_[std::size_t(q)];
+      pos_[f] = std::uint32_t(q);
+      rev_minus_fwd_.set(std::size_t(q), rev_cost_[f] - fwd_cost_[f]);
+    }
     for (int dir = 0; dir < 2; ++dir) {
       const bool reverse = dir == 1;
       std::int64_t q =
@@ -528,14 +590,14 @@ class Local {
       unsigned sync[kCaches] = {0, 0, 0};
       for (; q >= 0 && q < std::int64_t(m_); q += reverse ? -1 : 1) {
         const std::uint32_t f = F_[std::size_t(q)];
-        std::uint32_t list[3];
-        const unsigned n = reverse ? accesses(at(q + 2), at(q + 1), f, at(q - 1), list)
-                                   : accesses(at(q - 2), at(q - 1), f, at(q + 1), list);
+        AccessList& list = (reverse ? rev_list_ : fwd_list_)[f];
+        list.n = reverse ? accesses(at(q + 2), at(q + 1), f, at(q - 1), list.v)
+                         : accesses(at(q - 2), at(q - 1), f, at(q + 1), list.v);
         std::uint8_t masks[kCaches] = {0, 0, 0};
         for (int c = 0; c < kCaches; ++c) {
           if (size_[c] == 0) continue;
-          for (unsigned a = 0; a < n; ++a)
-            if (!fifo_[c].access(list[a])) masks[c] |= std::uint8_t(1u << a);
+          for (unsigned a = 0; a < list.n; ++a)
+            if (!fifo_[c].access(list.v[a])) masks[c] |= std::uint8_t(1u << a);
         }
         bool same = reverse ? q < lo - 2 : q > hi + 2;
         for (int c = 0; c < kCaches; ++c) {
@@ -543,25 +605,22 @@ class Local {
           same = same && stored == masks[c];
           stored = masks[c];
         }
-        (reverse ? rev_cost_ : fwd_cost_)[f] = weighted(masks);
+        std::int64_t& face_cost = (reverse ? rev_cost_ : fwd_cost_)[f];
+        const std::int64_t cost = weighted(masks);
+        if (!reverse) cost_ += cost - face_cost;
+        face_cost = cost;
+        rev_minus_fwd_.set(std::size_t(q), rev_cost_[f] - fwd_cost_[f]);
         if (!same) {
           sync[0] = sync[1] = sync[2] = 0;
           continue;
         }
         bool synced = true;
         for (int c = 0; c < kCaches; ++c) {
-          sync[c] += unsigned(std::popcount(unsigned(masks[c])));
+          sync[c] += unsigned(miss_count(masks[c]));
           synced = synced && sync[c] >= size_[c];
         }
         if (synced) break;
       }
-    }
-    cost_ = 0;
-    for (std::uint32_t q = 0; q < m_; ++q) {
-      const std::uint32_t f = F_[q];
-      cost_ += fwd_cost_[f];
-      rev_prefix_[q + 1] = rev_prefix_[q] + rev_cost_[f] - fwd_cost_[f];
-      if (q == 0 || !continues(F_[q - 1], f)) cost_ += strip_cost_;
     }
   }
 
@@ -575,14 +634,16 @@ class Local {
   std::int64_t strip_cost_ = 0;
   std::vector<std::uint32_t> pos_;
   std::vector<std::uint8_t> fwd_[kCaches], rev_[kCaches];  // miss bits per face, in access order
+  std::vector<AccessList> fwd_list_, rev_list_;            // what each face reads in F, forwards and backwards
+  std::vector<std::uint32_t> found_;                       // load()'s scratch: the last misses
   std::vector<std::int64_t> fwd_cost_, rev_cost_;          // weighted misses per face
-  std::vector<std::int64_t> rev_prefix_;                   // prefix sums over F of rev - fwd cost
+  PrefixSums rev_minus_fwd_;                               // over F positions: rev - fwd cost
   std::vector<std::uint32_t> stamp_[kCaches];
   std::uint32_t clock_[kCaches] = {1u << 20, 1u << 20, 1u << 20};
-  SmallFifo fifo_[kCaches];
+  StampFifo fifo_[kCaches];
   std::vector<std::uint32_t> face_mark_;
   std::uint32_t mark_ = 0;
-  std::vector<std::uint32_t> scratch_;
+  std::vector<std::uint32_t> old_, new_;  // apply()'s scratch: F[lo..hi] before and after
   std::int64_t cost_ = 0;
 };
 

@@ -12,15 +12,17 @@
 //   Insert2(x, y)  moves F[x], F[x+1] next to F[y] likewise.
 // x visits every face in a seeded random order; y ranges over the faces sharing a vertex with
 // F[x] and F[x-1], F[x+1]; the best beneficial perturbation is chased (x <- y, y <- z) until it
-// is locally best, then applied. Costs are re-evaluated from per-face miss bits stored for the
-// forward and the reverse traversal (3 cache sizes each): the cache state before a slice point
-// is rebuilt from the last k stored misses, and simulation stops once k successive misses agree
-// with the stored ones (exact for k <= 255; larger caches are still checked by the true cost
-// before a change is kept). After a change only the window around it is re-simulated. x positions in the middle of a
-// strip whose three faces miss fewer than 3 times in total are pruned.
+// is locally best, then applied. Costs are re-evaluated from per-face miss bits and access lists
+// stored for the forward and the reverse traversal (3 cache sizes each): the cache state before
+// a slice point is rebuilt from the last k stored misses, the re-simulation runs on time-stamped
+// FIFOs (O(1) per access), and it stops once k successive misses agree with the stored ones, so
+// the change in cost is exact for any k (the true cost is still checked before a change is kept).
+// After a change only the window around it is re-simulated. x positions in the middle of a strip
+// whose three faces miss fewer than 3 times in total are pruned.
 //
 // Budget: ReorderParams::iteration_budget x positions (reproducible), capped by
-// time_budget_seconds. Expect a 4-7% lower ACMR than greedy (Hoppe: 3-6%): at FIFO 16 fandisk
+// time_budget_seconds. Without a budget it runs to convergence (a whole pass finds nothing): about
+// 3 s of CPU time on fandisk, 30 s on bunny00 (docs/PERFORMANCE.md). Expect a 4-7% lower ACMR than greedy (Hoppe: 3-6%): at FIFO 16 fandisk
 // 0.598, triceratops 0.643, bunny00 0.641. LRU: the cost model is FIFO-only, so for LRU the greedy LRU order
 // is returned unchanged.
 #pragma once

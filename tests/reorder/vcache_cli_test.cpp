@@ -20,7 +20,7 @@ TEST(VcacheCli, CastanoRowsAsCsv) {
                         "csv", "--no-time"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("algo,policy,cache,target,triangles,vertices,misses,acmr,atvr,indices_per_triangle,vertices_"
-                       "sent,bandwidth,fetch_bytes,overfetch\n"),
+                       "sent,restarts,bandwidth,fetch_bytes,overfetch\n"),
             std::string::npos)
       << r.out;
   EXPECT_NE(r.out.find("scanline,fifo,16,16,512,289,544,"), std::string::npos) << r.out;
@@ -89,6 +89,29 @@ TEST(VcacheCli, BadInputIsAnErrorWithExitCode1) {
   const Result r = run({"vcache", rastrace::testing::data_file("meshes/triceratops.off"), "--algo", "grid"});
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("not a regular grid"), std::string::npos) << r.err;
+}
+
+TEST(VcacheCli, MissImageIsWrittenForOneOrderingAndRefusedForSeveral) {
+  const rastrace::testing::TempDir dir;
+  const std::string image = dir.file("grid-tipsy.png");
+  const Result r = run({"vcache", "grid:16x16", "--algo", "greedy", "--cache", "entries=12", "--format", "csv",
+                        "--no-time", "--miss-image", image});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(image));
+  EXPECT_GT(std::filesystem::file_size(image), 1000u);
+  // The strips' restarts are charged in bytes/triangle: 32 r + 2 (indices, restart markers included) / triangles.
+  // 634 vertices sent + 39 restart indices = 673 indices for 512 triangles: b = 1.314, and
+  // 32 * 313 / 512 + 2 * 673 / 512 = 22.19 bytes per triangle.
+  EXPECT_NE(r.out.find("vertices_sent,restarts,bandwidth,fetch_bytes,overfetch\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("greedy,fifo,12,12,512,289,313,0.611328125,1.083044983,1.314453125,634,39,22.191406250"),
+            std::string::npos)
+      << r.out;
+  const std::string refused = dir.file("two.png");
+  const Result two =
+      run({"vcache", "grid:16x16", "--algo", "greedy,tipsy", "--cache", "entries=12", "--miss-image", refused});
+  EXPECT_EQ(two.exit_code, 1);
+  EXPECT_NE(two.err.find("--miss-image"), std::string::npos) << two.err;
+  EXPECT_FALSE(std::filesystem::exists(refused));
 }
 
 TEST(ReorderCli, WritesTheFacesInTheNewOrderAndReadsBack) {

@@ -1,6 +1,5 @@
 // The general-mesh orders on real meshes: every registered algorithm gives a permutation of the
-// faces with their winding; tipsy and forsyth against meshoptimizer 0.18 in the same run; the
-// best of ours against the best of meshoptimizer's at FIFO 12, 16, 24 and 32.
+// faces with their winding; tipsy and forsyth against meshoptimizer 0.18 in the same run.
 #include <algorithm>
 #include <cmath>
 
@@ -87,31 +86,7 @@ TEST(VertexCacheOrders, FandiskAcmrAtFifo16) {
   EXPECT_NEAR(acmr("hilbert"), 0.865, 0.0005);
 }
 
-TEST(VertexCacheOrders, BestOfOursBeatsBestOfMeshoptimizer) {
-  for (const char* name : {"fandisk", "triceratops", "bunny00"}) {
-    const Mesh& mesh = test_mesh(name);
-    for (const unsigned cache : {12u, 16u, 24u, 32u}) {
-      std::vector<std::uint32_t> peer(mesh.indices.size());
-      meshopt_optimizeVertexCache(peer.data(), mesh.indices.data(), mesh.indices.size(), mesh.vertex_count());
-      std::uint64_t theirs = fifo_misses(peer, PrimitiveType::TriangleList, cache);
-      meshopt_optimizeVertexCacheFifo(peer.data(), mesh.indices.data(), mesh.indices.size(), mesh.vertex_count(),
-                                      cache);
-      theirs = std::min(theirs, fifo_misses(peer, PrimitiveType::TriangleList, cache));
-      std::uint64_t ours = UINT64_MAX;
-      std::string best;
-      for (const ReorderAlgorithm& algorithm : reorder_algorithms()) {
-        if (!reorder_algorithm_applies(algorithm, mesh)) continue;
-        const Ordering o = algorithm.run(mesh, params_for(cache));
-        const std::uint64_t misses = fifo_misses(o.indices, o.type, cache, o.restart_index);
-        if (misses < ours) {
-          ours = misses;
-          best = algorithm.name;
-        }
-      }
-      EXPECT_LT(ours, theirs) << name << " FIFO " << cache << ": best of ours is " << best;
-    }
-  }
-}
+// Best of ours against meshoptimizer's best: tests/reorder/best_order_test.cpp, on every CGAL mesh.
 
 }  // namespace
 }  // namespace rastrace
