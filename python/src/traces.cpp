@@ -33,7 +33,24 @@ RecordKind parse_kind(const std::string& text) {
   if (text == "vertex") return RecordKind::Vertex;
   if (text == "texel") return RecordKind::Texel;
   if (text == "address") return RecordKind::Address;
-  throw InputError("record kind '" + text + "': expected vertex, texel or address");
+  if (text == "framebuffer") return RecordKind::Framebuffer;
+  throw InputError("record kind '" + text + "': expected vertex, texel, address or framebuffer");
+}
+
+// FramebufferAccess with its operation as a plain byte (numpy has no enum fields): op 0 depth
+// read, 1 depth write, 2 colour write.
+struct FramebufferRecord {
+  std::uint16_t x, y;
+  std::uint8_t op, mask;
+  std::uint32_t triangle;
+};
+
+py::array framebuffer_array(const std::vector<FramebufferAccess>& records) {
+  py::array_t<FramebufferRecord> array(static_cast<py::ssize_t>(records.size()));
+  FramebufferRecord* out = array.mutable_data();
+  for (const FramebufferAccess& r : records)
+    *out++ = {r.x, r.y, static_cast<std::uint8_t>(r.op), r.mask, r.triangle};
+  return array;
 }
 
 template <typename Record>
@@ -91,6 +108,9 @@ class TraceFile {
       case RecordKind::Address:
         chunk.records = records_array(decoded->addresses);
         break;
+      case RecordKind::Framebuffer:
+        chunk.records = framebuffer_array(decoded->framebuffer);
+        break;
     }
     return chunk;
   }
@@ -101,9 +121,11 @@ class TraceFile {
     std::vector<VertexFetch> vertices;
     std::vector<TexelAccess> texels;
     std::vector<AddressAccess> addresses;
+    std::vector<FramebufferAccess> framebuffer;
     {
       py::gil_scoped_release release;
-      ReplayKinds kinds{kind == RecordKind::Vertex, kind == RecordKind::Texel, kind == RecordKind::Address};
+      ReplayKinds kinds{kind == RecordKind::Vertex, kind == RecordKind::Texel, kind == RecordKind::Address,
+                        kind == RecordKind::Framebuffer};
       reader_->set_read_ahead_kinds(kinds);
       for (std::size_t i = 0; i < reader_->chunks().size(); ++i) {
         if (reader_->chunks()[i].kind != kind) continue;
@@ -111,10 +133,12 @@ class TraceFile {
         vertices.insert(vertices.end(), c.vertices.begin(), c.vertices.end());
         texels.insert(texels.end(), c.texels.begin(), c.texels.end());
         addresses.insert(addresses.end(), c.addresses.begin(), c.addresses.end());
+        framebuffer.insert(framebuffer.end(), c.framebuffer.begin(), c.framebuffer.end());
       }
     }
     if (kind == RecordKind::Vertex) return records_array(vertices);
     if (kind == RecordKind::Texel) return records_array(texels);
+    if (kind == RecordKind::Framebuffer) return framebuffer_array(framebuffer);
     return records_array(addresses);
   }
 
@@ -144,9 +168,10 @@ void bind_traces(py::module_& m) {
   PYBIND11_NUMPY_DTYPE(VertexFetch, vertex, primitive_start);
   PYBIND11_NUMPY_DTYPE(TexelAccess, texture, level, x, y, pixel_x, pixel_y, triangle);
   PYBIND11_NUMPY_DTYPE(AddressAccess, address, label);
+  PYBIND11_NUMPY_DTYPE(FramebufferRecord, x, y, op, mask, triangle);
 
   py::class_<Chunk>(m, "TraceChunk", "One chunk of a trace: its kind and its records as a numpy structured array.")
-      .def_readonly("kind", &Chunk::kind, "vertex, texel or address")
+      .def_readonly("kind", &Chunk::kind, "vertex, texel, address or framebuffer")
       .def_readonly("first_record", &Chunk::first_record, "index of its first record among the records of its kind")
       .def_readonly("draw", &Chunk::draw, "vertex chunks: the draw number (-1 otherwise)")
       .def_readonly("primitive", &Chunk::primitive, "vertex chunks: triangle_list, triangle_strip, ...")
@@ -175,7 +200,7 @@ void bind_traces(py::module_& m) {
       .def_property_readonly("file_bytes", [](const TraceFile& f) { return f.reader().file_bytes(); })
       .def(
           "records", [](const TraceFile& f, const std::string& kind) { return f.reader().records(parse_kind(kind)); },
-          py::arg("kind"), "Number of records of a kind: vertex, texel or address")
+          py::arg("kind"), "Number of records of a kind: vertex, texel, address or framebuffer")
       .def("__len__", &TraceFile::chunk_count, "Number of chunks")
       .def("chunk", &TraceFile::chunk, py::arg("index"), "Chunk `index` (any order)")
       .def(
@@ -198,7 +223,8 @@ void bind_traces(py::module_& m) {
       "Opens a rastrace trace (written by render(trace=...) or `rastrace render --trace`). Iterate it\n"
       "for its chunks (TraceChunk: kind, records as a numpy structured array: vertex (vertex,\n"
       "primitive_start), texel (texture, level, x, y, pixel_x, pixel_y, triangle), address (address,\n"
-      "label)), or read(kind) for all records of a kind. Errors (truncated file, bad checksum) name\n"
+      "label), framebuffer (x, y of the quad, op 0 depth read / 1 depth write / 2 colour write, mask,\n"
+      "triangle)), or read(kind) for all records of a kind. Errors (truncated file, bad checksum) name\n"
       "the file, the chunk and its offset.");
 }
 
