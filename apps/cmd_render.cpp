@@ -99,7 +99,9 @@ void run_render(const RenderCommand& command) {
   const RasterStats& r = result.raster;
   const CacheStats& t = bank.texture_stats().at(0);
   const VertexStreamStats& v = bank.vertex_stats().at(0);
-  if (v.misses != p.vertices_shaded)  // the live model and the pipeline count the same misses
+  // The live model and the pipeline count the same misses; a warp or batch model is measured by
+  // the bank alone (the pipeline shades through its FIFO or LRU of the same entries).
+  if (!vcache.batched() && v.misses != p.vertices_shaded)
     throw std::logic_error("vertex cache model disagrees with the pipeline's shader invocations");
 
   Table table;
@@ -133,9 +135,19 @@ void run_render(const RenderCommand& command) {
                    {"texture_miss_rate", "miss rate", 4},
                    {"texture_bytes", "bytes fetched", 0},
                    {"bytes_per_fragment", "bytes/fragment", 3}};
-  table.add_row({p.triangles, p.degenerate, p.culled, p.vertices_shaded, p.acmr(), r.fragments, r.fragments_passed,
-                 r.texel_reads, t.misses, t.miss_rate(), t.bytes_fetched,
-                 r.fragments_passed ? double(t.bytes_fetched) / double(r.fragments_passed) : 0.0});
+  const std::uint64_t shaded = vcache.batched() ? v.misses : p.vertices_shaded;
+  const double acmr = p.triangles ? double(shaded) / double(p.triangles) : 0.0;
+  std::vector<TableCell> row = {p.triangles,      p.degenerate, p.culled, shaded, acmr, r.fragments,
+                                r.fragments_passed, r.texel_reads, t.misses, t.miss_rate(), t.bytes_fetched,
+                                r.fragments_passed ? double(t.bytes_fetched) / double(r.fragments_passed) : 0.0};
+  if (vcache.batched()) {
+    table.parameters.emplace_back("vcache_model", vertex_reuse_parameters(vcache));
+    table.columns.push_back({"warps", "warps", 0});
+    table.columns.push_back({"lane_use", "lane use", 3});
+    row.emplace_back(v.warps);
+    row.push_back(v.lane_slots ? TableCell(v.lane_use()) : TableCell());
+  }
+  table.add_row(std::move(row));
   std::cout << render_table(table, format);
 }
 

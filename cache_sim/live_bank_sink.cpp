@@ -42,8 +42,7 @@ bool same_layout(const LayoutSpec& a, const LayoutSpec& b) {
 
 LiveBankSink::LiveBankSink(CacheBankConfig config, TextureLevels textures)
     : config_(std::move(config)), textures_(std::move(textures)) {
-  for (const VertexCacheSpec& spec : config_.vertex) vertex_caches_.emplace_back(spec.policy, spec.entries);
-  vertex_misses_.assign(vertex_caches_.size(), 0);
+  for (const VertexCacheSpec& spec : config_.vertex) vertex_caches_.emplace_back(spec);
 
   // Finds or creates the stream, then the line-size group, of one byte cache.
   const auto attach = [&](const CacheConfig& cache, AddressStream::Kind kind, const LayoutSpec* layout,
@@ -122,13 +121,16 @@ void LiveBankSink::begin_draw(const DrawInfo& draw) {
   assembler_ = PrimitiveAssembler(draw.type);
   strips_in_draw_ = 0;
   if (config_.flush_vertex_cache_per_draw)
-    for (VertexCache& cache : vertex_caches_) cache.clear();
+    for (VertexReuseModel& model : vertex_caches_) model.flush();
 }
 
 void LiveBankSink::on_vertex(std::uint32_t vertex, bool primitive_start) {
   ++shared_.lookups;
   ++shared_.indices_sent;
-  for (std::size_t i = 0; i < vertex_caches_.size(); ++i) vertex_misses_[i] += !vertex_caches_[i].access(vertex);
+  for (VertexReuseModel& model : vertex_caches_)
+    if (model.per_index()) model.index(vertex);
+  if (primitive_start) primitive_size_ = 0;
+  if (primitive_size_ < primitive_.size()) primitive_[primitive_size_++] = vertex;
   if (vertex >= seen_.size()) seen_.resize(std::max<std::size_t>(std::size_t{vertex} + 1, seen_.size() * 2), 0);
   if (seen_[vertex] != draw_serial_ + 1) {
     seen_[vertex] = draw_serial_ + 1;
@@ -140,10 +142,16 @@ void LiveBankSink::on_vertex(std::uint32_t vertex, bool primitive_start) {
     ++strips_in_draw_;
   }
   if (assembler_.push(vertex, primitive_start)) {
-    if (is_degenerate(assembler_.triangle()))
+    const bool degenerate = is_degenerate(assembler_.triangle());
+    if (degenerate)
       ++shared_.degenerate;
     else
       ++shared_.triangles;
+    // Warp and batch models take a list's primitives as sent, a strip's drawn triangles.
+    const bool strip = draw_.type == PrimitiveType::TriangleStrip;
+    for (VertexReuseModel& model : vertex_caches_)
+      if (!model.per_index() && !(strip && degenerate))
+        model.primitive(strip ? assembler_.triangle().data() : primitive_.data(), strip ? 3 : primitive_size_);
   }
 }
 
@@ -197,7 +205,9 @@ void LiveBankSink::finish() {
   vertex_results_.clear();
   for (std::size_t i = 0; i < vertex_caches_.size(); ++i) {
     VertexStreamStats s = shared_;
-    s.misses = vertex_misses_[i];
+    s.misses = vertex_caches_[i].misses();
+    s.warps = vertex_caches_[i].warps();
+    s.lane_slots = vertex_caches_[i].lane_slots();
     vertex_results_.push_back(s);
   }
   std::vector<CacheStats> all;

@@ -3,9 +3,11 @@
 // this class, so a live render and a replay of its trace give the same numbers to the miss.
 //
 // What it simulates:
-//   vertex         post-transform vertex caches (FIFO/LRU, k entries) over the vertex fetches,
-//                  with the statistics of simulate_vertex_stream(): lookups, misses, drawn
-//                  triangles, degenerate triangles (looked up, not drawn), distinct vertices
+//   vertex         post-transform vertex reuse models over the vertex fetches (FIFO/LRU caches,
+//                  meshoptimizer's warp FIFO, Kerbl et al.'s batches: cache_sim/vertex_reuse.h),
+//                  with the statistics of simulate_vertex_reuse(): lookups, misses, drawn
+//                  triangles, degenerate triangles (looked up, not drawn), distinct vertices,
+//                  warps and lane slots
 //   texture        byte caches over the texel accesses, mapped to bytes by a texture layout
 //                  (texture_layout.h) built from the textures' level sizes
 //   vertex_buffer  byte caches over the vertex fetches: draw d's vertex v at (d << 40) + v*stride
@@ -16,6 +18,7 @@
 // simulated at finish(). Statistics are valid after finish().
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -25,14 +28,10 @@
 #include "cache_sim/lru_profile.h"
 #include "cache_sim/texture_layout.h"
 #include "cache_sim/vertex_cache.h"
+#include "cache_sim/vertex_reuse.h"
 #include "traces/sink.h"
 
 namespace rastrace {
-
-struct VertexCacheSpec {
-  VertexCachePolicy policy = VertexCachePolicy::Fifo;
-  unsigned entries = 16;
-};
 
 struct TextureCacheSpec {
   CacheConfig cache;
@@ -90,10 +89,11 @@ class LiveBankSink final : public EventSink {
   bool finished_ = false;
 
   // Post-transform caches and primitive assembly.
-  std::vector<VertexCache> vertex_caches_;
+  std::vector<VertexReuseModel> vertex_caches_;
+  std::array<std::uint32_t, 6> primitive_{};  // the open list primitive's fetched indices
+  unsigned primitive_size_ = 0;
   std::vector<VertexStreamStats> vertex_results_;
   VertexStreamStats shared_;  // triangles, degenerates, vertices, indices sent, lookups
-  std::vector<std::uint64_t> vertex_misses_;
   DrawInfo draw_{};
   std::uint32_t draw_serial_ = 0;    // counts begin_draw calls (distinct-vertex stamps)
   std::vector<std::uint32_t> seen_;  // per vertex: draw_serial_ + 1 when referenced in this draw

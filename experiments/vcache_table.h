@@ -1,6 +1,10 @@
 // The post-transform vertex cache under each ordering, as `rastrace vcache` and the report print
 // it: one row per algorithm, policy and cache size with ACMR, ATVR, misses, indices per triangle,
 // Hoppe's bandwidth (ACMR * 32 + indices per triangle * 2 bytes per triangle) and run time.
+// With reuse models (`--model all`, `--cache model=...`, cache_sim/vertex_reuse.h) one row per
+// algorithm and model instead, with the model's warps and SIMD lane use, every model's parameters
+// stated; each algorithm orders once, for `target` (16 when 0), so a row compares one order
+// across models.
 #pragma once
 
 #include <cstdint>
@@ -8,6 +12,7 @@
 #include <vector>
 
 #include "core/table.h"
+#include "cache_sim/vertex_reuse.h"
 #include "reorder/ordering.h"
 
 namespace rastrace {
@@ -24,9 +29,18 @@ struct VcacheTableSpec {
   // Count transforms as NVIDIA Mesh Tools charged them (cache_sim/eviction_charged.h), which is
   // how Castano's grid tables were counted; FIFO only. False: true misses.
   bool eviction_charged = false;
+  // Reuse models to simulate instead of caches x policies (empty: caches x policies).
+  std::vector<VertexCacheSpec> models;
 };
 
 // Throws InputError for an unknown algorithm, a cache of 0 entries, or eviction-charged LRU.
 Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheTableSpec& spec);
+
+// From a table with models: shader invocations per triangle (ACMR) with one row per algorithm and
+// one column per model, and each order's rank under each model (1 = fewest invocations).
+Table vcache_model_pivot(const Table& model_table);
+
+// Bars of ACMR per algorithm, one colour per model (gnuplot; PNG or SVG by extension).
+void write_vcache_model_plot(const std::string& path, const Table& model_table);
 
 }  // namespace rastrace
