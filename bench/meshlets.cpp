@@ -11,24 +11,16 @@
 
 #include "reorder/meshlets/meshlet.h"
 #include "reorder/meshlets/meshlet_peer.h"
-#include "scenes/mesh_io.h"
+#include "bench/bench_meshes.h"
 
 namespace {
 
-const rastrace::Mesh& bench_mesh(const std::string& name) {
-  static std::map<std::string, rastrace::Mesh> meshes;
-  auto found = meshes.find(name);
-  if (found == meshes.end())
-    found =
-        meshes.emplace(name, rastrace::load_mesh(std::string(RASTRACE_DATA_DIR) + "/meshes/" + name + ".off")).first;
-  return found->second;
-}
-
-const char* const kMeshes[] = {"fandisk", "triceratops", "bunny00"};
+using rastrace::bench::cgal_mesh;
+const auto& kMeshes = rastrace::bench::kComparisonMeshes;
 
 template <typename Build>
 void run_on(benchmark::State& state, Build build) {
-  const rastrace::Mesh& mesh = bench_mesh(kMeshes[state.range(0)]);
+  const rastrace::Mesh& mesh = cgal_mesh(kMeshes[state.range(0)]);
   const rastrace::MeshletLimits limits{64, static_cast<std::uint32_t>(state.range(1))};
   state.SetLabel(std::string(kMeshes[state.range(0)]) + " 64/" + std::to_string(limits.max_triangles));
   rastrace::MeshletSet last;

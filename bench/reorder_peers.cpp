@@ -13,25 +13,17 @@
 #include "cache_sim/vertex_cache.h"
 #include "reorder/kcache.h"
 #include "reorder/ordering.h"
-#include "scenes/mesh_io.h"
+#include "bench/bench_meshes.h"
 
 namespace {
 
-const rastrace::Mesh& bench_mesh(const std::string& name) {
-  static std::map<std::string, rastrace::Mesh> meshes;
-  auto found = meshes.find(name);
-  if (found == meshes.end())
-    found =
-        meshes.emplace(name, rastrace::load_mesh(std::string(RASTRACE_DATA_DIR) + "/meshes/" + name + ".off")).first;
-  return found->second;
-}
-
-const char* const kMeshes[] = {"fandisk", "triceratops", "bunny00"};
+using rastrace::bench::cgal_mesh;
+const auto& kMeshes = rastrace::bench::kComparisonMeshes;
 
 // run(mesh) returns the triangle list it made; its ACMR on FIFO 16 is reported beside the time.
 template <typename Run>
 void run_on(benchmark::State& state, Run run) {
-  const rastrace::Mesh& mesh = bench_mesh(kMeshes[state.range(0)]);
+  const rastrace::Mesh& mesh = cgal_mesh(kMeshes[state.range(0)]);
   state.SetLabel(kMeshes[state.range(0)]);
   std::vector<std::uint32_t> last;
   for (auto _ : state) last = run(mesh);
