@@ -127,6 +127,10 @@ void add_adjacency_command(CLI::App& app) {
       "  rastrace adjacency data/meshes/bunny00.off --order fast --edges --lines bunny-silhouette.png");
   command->callback([options] {
     const VertexCacheSpec cache = parse_vertex_cache(options->cache_spec, "--cache");
+    if (cache.batched())
+      throw InputError("--cache '" + options->cache_spec + "': the adjacency orders and CM/V are defined for a FIFO " +
+                       "shared by the draw, not for warp or batch models: write entries=N,policy=fifo (compare " +
+                       "orders under batch models with rastrace vcache --model all)");
     if (cache.policy != VertexCachePolicy::Fifo)
       throw InputError("--cache '" + options->cache_spec + "': the adjacency orders and CM/V are defined for FIFO: " +
                        "write entries=" + std::to_string(cache.entries) + ",policy=fifo");

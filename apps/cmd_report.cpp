@@ -31,6 +31,8 @@ void add_report_command(CLI::App& app) {
   command->add_option("--order", spec.orders, "Orderings whose texture and frame traffic is measured")->capture_default_str();
   command->add_option("--vcache-order", spec.vcache_orders, "Orderings in the vertex cache table")
       ->capture_default_str();
+  command->add_option("--model-order", spec.model_orders, "Orderings compared under every vertex reuse preset")
+      ->capture_default_str();
   add_sweep_flags(*command, c->sweep);
   command->footer(
       "Examples:\n"

@@ -76,11 +76,11 @@ void add_sweep_command(CLI::App& app) {
     SweepPart part;
     if (cache.kind == CacheKind::Vertex) {
       if (!o->sample.empty()) throw InputError("--sample: vertex caches are exact in one pass already; drop --sample");
-      const auto rows = run_vertex_sweep(o->trace, cache.vertex_policies, cache.entries, !o->keep_vertex_cache,
-                                         shard.value_or(SweepShard{}));
+      const auto rows =
+          run_vertex_sweep(o->trace, vertex_caches(cache), !o->keep_vertex_cache, shard.value_or(SweepShard{}));
       parameters.emplace_back("vertex_cache_per_draw", o->keep_vertex_cache ? "kept" : "flushed");
       table = vertex_cache_table("Post-transform vertex cache sweep", parameters, rows);
-      part.configurations = cache.vertex_policies.size() * cache.entries.size();
+      part.configurations = cache.combinations();
       for (const VertexSweepRow& row : rows) part.row_configurations.push_back(row.configuration);
     } else {
       SweepSpec spec = sweep_spec(cache, default_source(summary));

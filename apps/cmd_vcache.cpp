@@ -4,6 +4,8 @@
 // One row per algorithm, policy and cache size: ACMR, ATVR, misses, indices per triangle, Hoppe's
 // bandwidth (ACMR * 32 + indices per triangle * 2 bytes per triangle, restart indices counted) and
 // the ordering's run time. --miss-image writes the mesh with each face coloured by its misses.
+// With reuse models (--model all, or model=/warp=/primgroup= in --cache) one row per algorithm and
+// model with warps and lane use, then (text formats) ACMR pivoted by model; --plot draws it.
 // An algorithm orders for the simulated cache unless --target fixes the size it orders for.
 #include <algorithm>
 #include <iostream>
@@ -34,6 +36,8 @@ struct VcacheOptions {
   std::uint32_t vertex_bytes = 32;
   std::string fetch = "meshopt";
   std::string miss_image;
+  std::string model;  // reuse-model presets: the same as --cache model=...
+  std::string plot;
 };
 
 void run_vcache(const VcacheOptions& options) {
@@ -46,12 +50,23 @@ void run_vcache(const VcacheOptions& options) {
     throw InputError("--policy '" + options.old_policy + "': write the policy in the cache spec, e.g. --cache " +
                      "entries=12/16,policy=" + policies);
   }
-  const CacheSpec cache = parse_cache_spec(options.cache, "--cache");
+  std::string cache_text = options.cache;
+  if (!options.model.empty()) {
+    std::string models = options.model;
+    std::replace(models.begin(), models.end(), ',', '/');
+    cache_text = "model=" + models;
+  }
+  const CacheSpec cache = parse_cache_spec(cache_text, options.model.empty() ? "--cache" : "--model");
   if (cache.kind != CacheKind::Vertex)
     throw InputError("--cache '" + options.cache + "': vcache simulates post-transform vertex caches: expected " +
                      "entries=...,policy=..., e.g. entries=12/16,policy=fifo/lru");
   spec.caches = cache.entries;
   spec.policies = cache.vertex_policies;
+  const std::vector<VertexCacheSpec> models = vertex_caches(cache);
+  if (std::any_of(models.begin(), models.end(), [](const VertexCacheSpec& m) { return m.batched() || !m.preset.empty(); }))
+    spec.models = models;
+  if (!options.plot.empty() && spec.models.empty())
+    throw InputError("--plot draws ACMR per reuse model: give --model (e.g. --model all) or --cache model=...");
   spec.target = options.target;
   spec.seed = options.seed;
   spec.time_budget = options.time_budget;
@@ -64,7 +79,14 @@ void run_vcache(const VcacheOptions& options) {
   spec.fetch_cache = parse_fetch_cache(options.fetch, "--fetch");
   spec.miss_image = options.miss_image;
   const Mesh mesh = load_mesh_spec(options.mesh);
-  std::cout << render_table(vcache_table(mesh, options.mesh, spec), format);
+  const Table table = vcache_table(mesh, options.mesh, spec);
+  if (!spec.models.empty() && format != TableFormat::Json) {
+    const std::vector<Table> tables = {table, vcache_model_pivot(table)};
+    std::cout << render_tables(tables, format);
+  } else {
+    std::cout << render_table(table, format);
+  }
+  if (!options.plot.empty()) write_vcache_model_plot(options.plot, table);
 }
 
 }  // namespace
@@ -79,6 +101,11 @@ void add_vcache_command(CLI::App& app) {
       ->add_option("--cache", options->cache,
                    "Simulated post-transform caches (cache spec, README): entries=N/M/...,policy=fifo/lru")
       ->capture_default_str();
+  command
+      ->add_option("--model", options->model,
+                   "Vertex reuse presets instead of --cache: all, or a comma-separated list of nv-pascal, nv-maxwell, "
+                   "amd-gcn, intel, kerbl-nv, kerbl-nv-gl, kerbl-amd, kerbl-intel (one row per ordering and model)");
+  command->add_option("--plot", options->plot, "With models: bars of ACMR per ordering and model (PNG or SVG)");
   command->add_option("--policy", options->old_policy)->group("");  // the old spelling: an error naming the new
   command->add_option("--target", options->target,
                       "Cache size the orderings optimize for (default: the simulated size)");
@@ -109,7 +136,9 @@ void add_vcache_command(CLI::App& app) {
       "  rastrace vcache grid:16x16 --algo grid --target 8 --cache entries=8/16\n"
       "  rastrace vcache grid:16x16 --algo scanline,grid --cache entries=12/16/20 --accounting evictions\n"
       "  rastrace vcache data/meshes/bunny00.off --algo original,tipsy --vertex-bytes 48 --fetch size=32KiB,line=64B,assoc=4\n"
-      "  rastrace vcache data/meshes/fandisk.off --algo kcache --cache entries=16 --miss-image fandisk-misses.png");
+      "  rastrace vcache data/meshes/fandisk.off --algo kcache --cache entries=16 --miss-image fandisk-misses.png\n"
+      "  rastrace vcache data/meshes/bunny00.off --algo tipsy,forsyth,batch --model all --no-time --plot models.png\n"
+      "  rastrace vcache data/meshes/fandisk.off --cache entries=32,warp=32,primgroup=32 --format json");
   command->callback([options] { run_vcache(*options); });
 }
 

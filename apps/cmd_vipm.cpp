@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "core/error.h"
 #include "cache_sim/cache_spec.h"
 #include "experiments/cache_report.h"
 #include "experiments/vipm_experiment.h"
@@ -27,6 +28,9 @@ struct VipmOptions {
 void run_vipm(VipmOptions options) {
   const TableFormat format = parse_table_format(options.format);
   options.spec.cache = parse_vertex_cache(options.cache, "--cache");
+  if (options.spec.cache.batched())
+    throw InputError("--cache '" + options.cache + "': the VIPM measures use a FIFO or LRU cache shared by the draw, " +
+                     "not warp or batch models: write entries=N,policy=fifo or lru");
   const Mesh mesh = load_mesh_spec(options.mesh);
   const VipmExperiment experiment = run_vipm_experiment(mesh, options.mesh, options.spec);
   const std::vector<Table> tables = {vipm_lod_table(experiment), vipm_summary_table(experiment),

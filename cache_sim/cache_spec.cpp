@@ -62,6 +62,39 @@ void set_entries(CacheSpec& s, const std::vector<std::string>& values, const Con
   }
 }
 
+std::string vertex_reuse_preset_names() {
+  std::string out;
+  for (const VertexReusePreset& preset : vertex_reuse_presets()) out += std::string(out.empty() ? "" : ", ") + preset.name;
+  return out;
+}
+
+void set_model(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  for (const std::string& v : values) {
+    if (v == "all") {
+      for (const VertexReusePreset& preset : vertex_reuse_presets()) push_unique(s.models, std::string(preset.name));
+      continue;
+    }
+    if (!find_vertex_reuse_preset(v)) bad_value(c, "model", v, vertex_reuse_preset_names() + " or all");
+    push_unique(s.models, v);
+  }
+}
+
+void set_warp(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  s.warps.clear();
+  for (const std::uint64_t w : numbers(values, c, "warp", false)) {
+    if (w == 1 || w == 2 || w > 1024) bad_value(c, "warp", std::to_string(w), "0 (no warp limit) or 3..1024 vertices");
+    push_unique(s.warps, static_cast<unsigned>(w));
+  }
+}
+
+void set_primgroup(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  s.primgroups.clear();
+  for (const std::uint64_t g : numbers(values, c, "primgroup", false)) {
+    if (g > 65536) bad_value(c, "primgroup", std::to_string(g), "0 (no limit) or 1..65536 primitives");
+    push_unique(s.primgroups, static_cast<unsigned>(g));
+  }
+}
+
 void set_vertex_policy(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
   s.vertex_policies.clear();
   for (const std::string& v : values) {
@@ -179,6 +212,12 @@ void set_stride(CacheSpec& s, const std::vector<std::string>& values, const Cont
 // Vertex keys first, then byte keys, in the order the help lists them.
 constexpr KeyRule kKeys[] = {
     {"entries", kVertexKey, true, "1..1048576, e.g. entries=16 or entries=4..64", set_entries, nullptr},
+    {"model", kVertexKey, true,
+     "a reuse-model preset: nv-pascal|nv-maxwell|amd-gcn|intel|kerbl-nv|kerbl-nv-gl|kerbl-amd|kerbl-intel|all",
+     set_model, nullptr},
+    {"warp", kVertexKey, true, "vertices per warp, flushing the FIFO (0 = none), e.g. warp=32", set_warp, nullptr},
+    {"primgroup", kVertexKey, true, "primitives per warp, flushing the FIFO (0 = none), e.g. primgroup=32",
+     set_primgroup, nullptr},
     {"size", kByteKey, true, "a byte size, e.g. size=16KiB or size=1KiB..64KiB", nullptr, set_size},
     {"line", kByteKey, true, "a byte size, e.g. line=64B or line=32B/64B", nullptr, set_line},
     {"assoc", kByteKey, true, "ways or full, e.g. assoc=4 or assoc=1/2/4/full", nullptr, set_assoc},
@@ -262,7 +301,8 @@ std::string old_spelling(const std::string& text) {
 }  // namespace
 
 std::size_t CacheSpec::combinations() const {
-  if (kind == CacheKind::Vertex) return vertex_policies.size() * entries.size();
+  if (kind == CacheKind::Vertex)
+    return models.empty() ? vertex_policies.size() * entries.size() * warps.size() * primgroups.size() : models.size();
   return layouts.size() * policies.size() * lines.size() * assocs.size() * sizes.size();
 }
 
@@ -309,7 +349,7 @@ CacheSpec parse_cache_spec(const std::string& text, const std::string& option) {
   spec.kind = vertex_key ? CacheKind::Vertex : CacheKind::Byte;
   if (!vertex_key && !byte_key)
     throw InputError(
-        c.where("missing entries=... (a vertex cache, e.g. entries=16,policy=fifo) or size=... "
+        c.where("missing entries=... or model=... (a vertex cache, e.g. entries=16,policy=fifo or model=kerbl-nv) or size=... "
                 "(a byte cache, e.g. size=16KiB,line=64B,assoc=4,policy=lru)"));
   // A model comes first (the keys given beside it override it), then layouts: texel, pixel and
   // align apply to every layout, whichever order they were written in.
@@ -320,8 +360,20 @@ CacheSpec parse_cache_spec(const std::string& text, const std::string& option) {
   std::stable_sort(items.begin(), items.end(), [&](const Item& a, const Item& b) { return rank(a) < rank(b); });
   for (const Item& item : items)
     (spec.kind == CacheKind::Vertex ? item.key->set_vertex : item.key->set_byte)(spec, item.values, c);
+  if (!spec.models.empty()) {
+    for (const Item& item : items)
+      if (std::string name = item.key->name; name != "model")
+        throw InputError(c.where("model= names a preset with all its parameters: drop " + name +
+                                 "= (or spell the cache out, e.g. entries=32,policy=fifo,warp=32,primgroup=32)"));
+    return spec;
+  }
   if (spec.kind == CacheKind::Vertex && spec.entries.empty())
-    throw InputError(c.where("missing entries=...: a vertex cache needs its size, e.g. entries=16"));
+    throw InputError(c.where("missing entries=... (e.g. entries=16) or model=... (e.g. model=nv-pascal)"));
+  if (spec.kind == CacheKind::Vertex &&
+      std::find(spec.vertex_policies.begin(), spec.vertex_policies.end(), VertexCachePolicy::Lru) !=
+          spec.vertex_policies.end() &&
+      (spec.warps != std::vector<unsigned>{0} || spec.primgroups != std::vector<unsigned>{0}))
+    throw InputError(c.where("warp= and primgroup= flush meshoptimizer's FIFO model: expected policy=fifo"));
   if (spec.kind == CacheKind::Byte && spec.sizes.empty())
     throw InputError(c.where("missing size=...: a byte cache needs its capacity, e.g. size=16KiB"));
   for (const Item& item : items) {
@@ -343,8 +395,12 @@ CacheSpec parse_cache_spec(const std::string& text, const std::string& option) {
 std::vector<VertexCacheSpec> vertex_caches(const CacheSpec& spec) {
   std::vector<VertexCacheSpec> out;
   if (spec.kind != CacheKind::Vertex) return out;
+  for (const std::string& model : spec.models) out.push_back(find_vertex_reuse_preset(model)->spec);
+  if (!spec.models.empty()) return out;
   for (const VertexCachePolicy policy : spec.vertex_policies)
-    for (const unsigned k : spec.entries) out.push_back({policy, k});
+    for (const unsigned k : spec.entries)
+      for (const unsigned warp : spec.warps)
+        for (const unsigned primgroup : spec.primgroups) out.push_back(vertex_cache_spec(policy, k, warp, primgroup));
   return out;
 }
 
@@ -458,7 +514,7 @@ std::string format_framebuffer_cache_spec(const FramebufferCacheSpec& cache) {
 }
 
 std::string format_cache_spec(const VertexCacheSpec& cache) {
-  return "entries=" + std::to_string(cache.entries) + ",policy=" + to_string(cache.policy);
+  return cache.preset.empty() ? vertex_reuse_name(cache) : "model=" + cache.preset;
 }
 
 std::string cache_spec_keys_help() {

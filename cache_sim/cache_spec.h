@@ -6,7 +6,14 @@
 //                                             range a..b (1KiB..64KiB, 4..64), as in core/units.h
 //
 // Two kinds of cache, told apart by their keys (mixing them is an error):
-//   vertex (post-transform) cache   entries=1..1048576 (required), policy=fifo|lru (fifo)
+//   vertex (post-transform) cache   entries=1..1048576 (required), policy=fifo|lru (fifo),
+//                                   warp=0|3..1024 (0), primgroup=0..65536 (0): meshoptimizer's
+//                                   FIFO flushed per warp of that many vertices or primitives
+//                                   (FIFO only; cache_sim/warp_fifo.h)
+//   vertex reuse preset             model=NAME[/NAME...]|all, alone (it fixes every parameter):
+//                                   nv-pascal, nv-maxwell, amd-gcn, intel (meshoptimizer's
+//                                   profiles), kerbl-nv, kerbl-nv-gl, kerbl-amd, kerbl-intel
+//                                   (Kerbl et al. 2018's batch models); cache_sim/vertex_reuse.h
 //   byte cache                      size=SIZE (required), line=SIZE (64B), assoc=N|full (4),
 //                                   policy=fifo|lru|random|opt (lru),
 //                                   layout=linear|block2|block4|block8|block16|morton (linear),
@@ -21,7 +28,7 @@
 // size, line, assoc, policy, layout and entries take alternatives; a spec with alternatives
 // stands for the cross product. Expansion order (the last key varies fastest), which is the
 // row order of the sweep tables: byte caches layout, policy, line, assoc, size; vertex caches
-// policy, entries.
+// policy, entries, warp, primgroup (presets in the order given).
 //
 // Errors are InputErrors that name the option and the spec, and list the accepted keys or values.
 // A spec in one of the spellings used before this grammar (`16KiB,64B,4way,lru`, `fifo:16`,
@@ -38,6 +45,7 @@
 #include "cache_sim/sweep.h"
 #include "cache_sim/texture_layout.h"
 #include "cache_sim/vertex_cache.h"
+#include "cache_sim/vertex_reuse.h"
 
 namespace rastrace {
 
@@ -50,6 +58,9 @@ struct CacheSpec {
   // Vertex caches.
   std::vector<unsigned> entries;
   std::vector<VertexCachePolicy> vertex_policies{VertexCachePolicy::Fifo};
+  std::vector<unsigned> warps{0};
+  std::vector<unsigned> primgroups{0};
+  std::vector<std::string> models;  // presets; when given, the only vertex key
   // Byte caches.
   std::vector<std::uint64_t> sizes;
   std::vector<std::uint32_t> lines{64};
@@ -91,7 +102,7 @@ FramebufferCacheSpec attila_framebuffer_cache(FramebufferBuffer buffer);
 // InputError for depth and colour caches, which replay takes and sweep does not.
 SweepSpec sweep_spec(const CacheSpec& spec, SweepSource fallback);
 
-// The spec that describes one cache, e.g. "size=16KiB,line=64B,assoc=4,policy=lru".
+// The spec that describes one cache, e.g. "size=16KiB,line=64B,assoc=4,policy=lru" or "model=kerbl-nv".
 std::string format_cache_spec(const CacheConfig& cache);
 std::string format_cache_spec(const VertexCacheSpec& cache);
 // "source=depth,size=16KiB,line=256B,assoc=4,policy=lru,layout=block8,pixel=4B": every parameter.

@@ -58,14 +58,21 @@ LiveBankSink::LiveBankSink(CacheBankConfig config, TextureLevels textures, Frame
   for (const VertexCachePolicy policy : {VertexCachePolicy::Fifo, VertexCachePolicy::Lru}) {
     std::vector<unsigned> sizes;
     for (const VertexCacheSpec& spec : config_.vertex)
-      if (spec.policy == policy) sizes.push_back(spec.entries);
+      if (!spec.batched() && spec.policy == policy) sizes.push_back(spec.entries);
     if (!sizes.empty()) vertex_caches_.emplace_back(policy, std::move(sizes));
   }
-  std::size_t counts[2] = {0, 0};
+  std::vector<std::size_t> counts(vertex_caches_.size(), 0);
   for (const VertexCacheSpec& spec : config_.vertex) {
-    std::size_t bank = 0;
-    while (vertex_caches_[bank].policy() != spec.policy) ++bank;
-    vertex_cache_of_.emplace_back(bank, counts[bank]++);
+    VertexCacheSlot slot;
+    if (spec.batched()) {
+      slot.batched = true;
+      slot.bank = vertex_models_.size();
+      vertex_models_.emplace_back(spec);
+    } else {
+      while (vertex_caches_[slot.bank].policy() != spec.policy) ++slot.bank;
+      slot.size = counts[slot.bank]++;
+    }
+    vertex_cache_of_.push_back(slot);
   }
 
   // Finds or creates the stream, then the line-size group, of one byte cache.
@@ -142,13 +149,23 @@ void LiveBankSink::begin_draw(const DrawInfo& draw) {
   ++draw_serial_;
   assembler_ = PrimitiveAssembler(draw.type);
   strips_in_draw_ = 0;
-  if (config_.flush_vertex_cache_per_draw)
+  if (config_.flush_vertex_cache_per_draw) {
+    for (VertexCacheSlot& slot : vertex_cache_of_) {
+      if (slot.batched) continue;
+      const std::uint64_t misses = vertex_caches_[slot.bank].misses(slot.size);
+      slot.closed_warps += misses > slot.misses_at_flush;
+      slot.misses_at_flush = misses;
+    }
     for (VertexCacheSizes& caches : vertex_caches_) caches.clear();
+    for (VertexReuseModel& model : vertex_models_) model.flush();
+  }
 }
 
 void LiveBankSink::on_vertex(std::uint32_t vertex, bool primitive_start) {
   ++shared_.lookups;
   ++shared_.indices_sent;
+  if (primitive_start) primitive_size_ = 0;
+  if (primitive_size_ < primitive_.size()) primitive_[primitive_size_++] = vertex;
   if (vertex >= seen_.size()) seen_.resize(std::max<std::size_t>(std::size_t{vertex} + 1, seen_.size() * 2), 0);
   if (seen_[vertex] != draw_serial_ + 1) {
     seen_[vertex] = draw_serial_ + 1;
@@ -160,10 +177,16 @@ void LiveBankSink::on_vertex(std::uint32_t vertex, bool primitive_start) {
     ++strips_in_draw_;
   }
   if (assembler_.push(vertex, primitive_start)) {
-    if (is_degenerate(assembler_.triangle()))
+    const bool degenerate = is_degenerate(assembler_.triangle());
+    if (degenerate)
       ++shared_.degenerate;
     else
       ++shared_.triangles;
+    // Warp and batch models take a list's primitives as sent, a strip's drawn triangles.
+    const bool strip = draw_.type == PrimitiveType::TriangleStrip;
+    for (VertexReuseModel& model : vertex_models_)
+      if (!(strip && degenerate))
+        model.primitive(strip ? assembler_.triangle().data() : primitive_.data(), strip ? 3 : primitive_size_);
   }
 }
 
@@ -245,9 +268,18 @@ void LiveBankSink::finish() {
   if (finished_) return;
   finished_ = true;
   vertex_results_.clear();
-  for (const auto& [bank, size] : vertex_cache_of_) {
+  for (const VertexCacheSlot& slot : vertex_cache_of_) {
     VertexStreamStats s = shared_;
-    s.misses = vertex_caches_[bank].misses(size);
+    if (slot.batched) {
+      const VertexReuseModel& model = vertex_models_[slot.bank];
+      s.misses = model.misses();
+      s.warps = model.warps();
+      s.lane_slots = model.lane_slots();
+    } else {
+      s.misses = vertex_caches_[slot.bank].misses(slot.size);
+      s.warps = slot.closed_warps + (s.misses > slot.misses_at_flush);
+      s.lane_slots = 0;  // a plain cache has no SIMD lanes
+    }
     vertex_results_.push_back(s);
   }
   std::vector<CacheStats> all;

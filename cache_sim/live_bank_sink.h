@@ -3,10 +3,12 @@
 // this class, so a live render and a replay of its trace give the same numbers to the miss.
 //
 // What it simulates:
-//   vertex         post-transform vertex caches (FIFO/LRU, k entries; all sizes of a policy in one
-//                  pass, vertex_cache_sizes.h) over the vertex fetches,
-//                  with the statistics of simulate_vertex_stream(): lookups, misses, drawn
-//                  triangles, degenerate triangles (looked up, not drawn), distinct vertices
+//   vertex         post-transform vertex reuse models over the vertex fetches: FIFO/LRU caches of
+//                  k entries (all sizes of a policy in one pass, vertex_cache_sizes.h) and the
+//                  warp and batch models of current GPUs (meshoptimizer's warp FIFO, Kerbl et
+//                  al.'s batches: cache_sim/vertex_reuse.h), with the statistics of
+//                  simulate_vertex_reuse(): lookups, misses, drawn triangles, degenerate
+//                  triangles (looked up, not drawn), distinct vertices, warps and lane slots
 //   texture        byte caches over the texel accesses, mapped to bytes by a texture layout
 //                  (texture_layout.h) built from the textures' level sizes
 //   vertex_buffer  byte caches over the vertex fetches: draw d's vertex v at (d << 40) + v*stride
@@ -21,6 +23,7 @@
 // simulated at finish(). Statistics are valid after finish().
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -32,15 +35,11 @@
 #include "cache_sim/texture_layout.h"
 #include "cache_sim/vertex_cache.h"
 #include "cache_sim/vertex_cache_sizes.h"
+#include "cache_sim/vertex_reuse.h"
 #include "cache_sim/write_back_cache.h"
 #include "traces/sink.h"
 
 namespace rastrace {
-
-struct VertexCacheSpec {
-  VertexCachePolicy policy = VertexCachePolicy::Fifo;
-  unsigned entries = 16;
-};
 
 struct TextureCacheSpec {
   CacheConfig cache;
@@ -122,10 +121,22 @@ class LiveBankSink final : public EventSink {
   bool finished_ = false;
 
   // Post-transform caches and primitive assembly.
-  // One bank per policy, every size of that policy in one pass (vertex_cache_sizes.h).
+  // Plain caches: one bank per policy, every size of that policy in one pass
+  // (vertex_cache_sizes.h). Warp and batch models: one model each.
+  struct VertexCacheSlot {
+    bool batched = false;
+    std::size_t bank = 0;  // plain: the bank; batched: the model
+    std::size_t size = 0;  // plain: the size's index in the bank
+    // Plain caches count a warp per flushed draw with a miss, as VertexReuseModel does.
+    std::uint64_t closed_warps = 0;
+    std::uint64_t misses_at_flush = 0;
+  };
   std::vector<VertexCacheSizes> vertex_caches_;
-  std::vector<std::pair<std::size_t, std::size_t>> vertex_cache_of_;  // per config entry: bank, size index
-  std::vector<std::uint32_t> fetched_;                                // this batch's vertex ids
+  std::vector<VertexReuseModel> vertex_models_;
+  std::vector<VertexCacheSlot> vertex_cache_of_;  // per config entry
+  std::vector<std::uint32_t> fetched_;            // this batch's vertex ids
+  std::array<std::uint32_t, 6> primitive_{};      // the open list primitive's fetched indices
+  unsigned primitive_size_ = 0;
   std::vector<VertexStreamStats> vertex_results_;
   VertexStreamStats shared_;  // triangles, degenerates, vertices, indices sent, lookups
   DrawInfo draw_{};

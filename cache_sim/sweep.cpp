@@ -188,21 +188,15 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
   return result;
 }
 
-std::vector<VertexSweepRow> run_vertex_sweep(const std::string& trace_path,
-                                             const std::vector<VertexCachePolicy>& policies,
-                                             const std::vector<unsigned>& entries, bool flush_per_draw,
-                                             const SweepShard& shard) {
+std::vector<VertexSweepRow> run_vertex_sweep(const std::string& trace_path, const std::vector<VertexCacheSpec>& caches,
+                                             bool flush_per_draw, const SweepShard& shard) {
   CacheBankConfig bank;
   bank.flush_vertex_cache_per_draw = flush_per_draw;
   std::vector<std::size_t> configurations;
-  std::size_t configuration = 0;
-  for (const VertexCachePolicy policy : policies)
-    for (const unsigned k : entries) {
-      if (shard.owns(configuration)) {
-        bank.vertex.push_back({policy, k});
-        configurations.push_back(configuration);
-      }
-      ++configuration;
+  for (std::size_t configuration = 0; configuration < caches.size(); ++configuration)
+    if (shard.owns(configuration)) {
+      bank.vertex.push_back(caches[configuration]);
+      configurations.push_back(configuration);
     }
   std::vector<VertexSweepRow> rows;
   if (bank.vertex.empty()) return rows;

@@ -75,12 +75,10 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
 struct VertexSweepRow {
   VertexCacheSpec cache;
   VertexStreamStats stats;
-  std::size_t configuration = 0;  // policy-major index in policies x entries
+  std::size_t configuration = 0;  // index in `caches`
 };
-// Post-transform vertex caches: every policy x entry count in one pass over the vertex fetches.
-std::vector<VertexSweepRow> run_vertex_sweep(const std::string& trace_path,
-                                             const std::vector<VertexCachePolicy>& policies,
-                                             const std::vector<unsigned>& entries, bool flush_per_draw = true,
-                                             const SweepShard& shard = {});
+// Post-transform vertex reuse models (vertex_caches() of a spec) in one pass over the vertex fetches.
+std::vector<VertexSweepRow> run_vertex_sweep(const std::string& trace_path, const std::vector<VertexCacheSpec>& caches,
+                                             bool flush_per_draw = true, const SweepShard& shard = {});
 
 }  // namespace rastrace

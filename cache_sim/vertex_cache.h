@@ -76,6 +76,11 @@ struct VertexStreamStats {
   // Hoppe's b: indices sent per drawn triangle (restart indices count: they are sent).
   std::uint64_t indices_sent = 0;
   double indices_per_triangle() const { return triangles ? double(indices_sent) / double(triangles) : 0.0; }
+  // Set by the reuse models of cache_sim/vertex_reuse.h: warps (waves, SIMD threads) executed,
+  // and the lanes they occupy (0 for a plain cache, which has no warps).
+  std::uint64_t warps = 0;
+  std::uint64_t lane_slots = 0;
+  double lane_use() const { return lane_slots ? double(misses) / double(lane_slots) : 0.0; }
 };
 
 // The statistics of an index stream that no cache changes (misses = 0): lookups, indices sent,

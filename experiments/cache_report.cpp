@@ -84,9 +84,38 @@ Table vertex_cache_table(const std::string& title, std::vector<std::pair<std::st
   t.columns = {{"policy", "policy", 0},     {"entries", "entries", 0},     {"lookups", "lookups", 0},
                {"misses", "misses", 0},     {"triangles", "triangles", 0}, {"degenerate", "degenerate", 0},
                {"vertices", "vertices", 0}, {"acmr", "ACMR", 3},           {"atvr", "ATVR", 3}};
-  for (const VertexSweepRow& r : rows)
-    t.add_row({to_string(r.cache.policy), r.cache.entries, r.stats.lookups, r.stats.misses, r.stats.triangles,
-               r.stats.degenerate, r.stats.vertices, r.stats.acmr(), r.stats.atvr()});
+  // Warp and batch models (cache_sim/vertex_reuse.h) add their name, warps and lane use; their
+  // full parameters go into the table's parameters.
+  const bool batched = std::any_of(rows.begin(), rows.end(), [](const VertexSweepRow& r) { return r.cache.batched(); });
+  if (batched) {
+    t.columns.insert(t.columns.begin(), TableColumn{"model", "model", 0});
+    t.columns.push_back({"warps", "warps", 0});
+    t.columns.push_back({"lane_slots", "lane slots", 0});
+    t.columns.push_back({"lane_use", "lane use", 3});
+    std::set<std::string> stated;
+    for (const VertexSweepRow& r : rows)
+      if (const std::string name = vertex_reuse_name(r.cache); stated.insert(name).second)
+        t.parameters.emplace_back("model " + name, vertex_reuse_parameters(r.cache));
+  }
+  for (const VertexSweepRow& r : rows) {
+    const bool fifo_family = r.cache.kind != VertexReuseKind::KerblBatch;
+    std::vector<TableCell> row = {fifo_family ? TableCell(to_string(r.cache.policy)) : TableCell(),
+                                  fifo_family ? TableCell(r.cache.entries) : TableCell(),
+                                  r.stats.lookups,
+                                  r.stats.misses,
+                                  r.stats.triangles,
+                                  r.stats.degenerate,
+                                  r.stats.vertices,
+                                  r.stats.acmr(),
+                                  r.stats.atvr()};
+    if (batched) {
+      row.insert(row.begin(), vertex_reuse_name(r.cache));
+      row.emplace_back(r.stats.warps);
+      row.push_back(r.stats.lane_slots ? TableCell(r.stats.lane_slots) : TableCell());
+      row.push_back(r.stats.lane_slots ? TableCell(r.stats.lane_use()) : TableCell());
+    }
+    t.add_row(std::move(row));
+  }
   return t;
 }
 

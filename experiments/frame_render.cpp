@@ -6,6 +6,7 @@
 #include "cache_sim/cache_spec.h"
 #include "cache_sim/live_bank_sink.h"
 #include "cache_sim/texture_layout.h"
+#include "cache_sim/vertex_reuse.h"
 #include "core/error.h"
 #include "experiments/frame_traffic.h"
 #include "experiments/vipm_render.h"
@@ -73,7 +74,9 @@ Frame render_frame(const FrameSpec& spec) {
   const CacheStats& t = bank.texture_stats().at(0);
   const FrameTraffic traffic = measure_frame_traffic(caches, bank, frame.result);
   const VertexStreamStats& v = bank.vertex_stats().at(0);
-  if (v.misses != p.vertices_shaded)  // the live model and the pipeline count the same misses
+  // The live model and the pipeline count the same misses; a warp or batch model is measured by
+  // the bank alone (the pipeline shades through its FIFO or LRU of the same entries).
+  if (!vcache.batched() && v.misses != p.vertices_shaded)
     throw std::logic_error("vertex cache model disagrees with the pipeline's shader invocations");
 
   Table& table = frame.table;
@@ -113,13 +116,21 @@ Frame render_frame(const FrameSpec& spec) {
                    {"bytes_per_fragment", "texture bytes/fragment", 3}};
   for (TableColumn& column : frame_traffic_columns()) table.columns.push_back(std::move(column));
   std::vector<TableCell> row;
-  for (const std::uint64_t count : {p.triangles, p.degenerate, p.culled, p.vertices_shaded}) row.emplace_back(count);
-  row.emplace_back(p.acmr());
+  const std::uint64_t shaded = vcache.batched() ? v.misses : p.vertices_shaded;
+  for (const std::uint64_t count : {p.triangles, p.degenerate, p.culled, shaded}) row.emplace_back(count);
+  row.emplace_back(p.triangles ? double(shaded) / double(p.triangles) : 0.0);
   for (const std::uint64_t count : {r.fragments, r.fragments_shaded, r.fragments_passed, r.texel_reads, t.misses})
     row.emplace_back(count);
   row.emplace_back(t.miss_rate());
   row.emplace_back(r.fragments_shaded ? double(t.bytes_fetched) / double(r.fragments_shaded) : 0.0);
   for (TableCell& cell : frame_traffic_cells(traffic)) row.push_back(std::move(cell));
+  if (vcache.batched()) {
+    table.parameters.emplace_back("vcache_model", vertex_reuse_parameters(vcache));
+    table.columns.push_back({"warps", "warps", 0});
+    table.columns.push_back({"lane_use", "lane use", 3});
+    row.emplace_back(v.warps);
+    row.push_back(v.lane_slots ? TableCell(v.lane_use()) : TableCell());
+  }
   table.add_row(std::move(row));
   return frame;
 }

@@ -18,6 +18,8 @@ struct ReportSpec {
   std::string output_dir = "out";
   std::string orders = "original,strip,texgroup,tipsy";  // orderings whose frame traffic is measured
   std::string vcache_orders = "original,scanline,morton,hilbert,strip,forsyth,tipsy,kcache,greedy,texgroup";
+  // Orderings compared under every vertex reuse preset (FIFO with warps, Kerbl et al.'s batches).
+  std::string model_orders = "original,morton,strip,forsyth,tipsy,kcache,greedy,batch";
   SweepSpec sweep;  // the texture caches swept over every trace
 };
 

@@ -21,6 +21,8 @@ void accumulate(VertexStreamStats& total, const VertexStreamStats& part) {
   total.degenerate += part.degenerate;
   total.vertices += part.vertices;
   total.indices_sent += part.indices_sent;
+  total.warps += part.warps;
+  total.lane_slots += part.lane_slots;
 }
 
 // The orderings' streams through the post-transform cache, object by object (the pipeline
@@ -29,12 +31,10 @@ VertexStreamStats vertex_stats(const Scene& scene, const OrderedDraws& ordered, 
   VertexStreamStats total;
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     if (ordered.draws.empty()) {
-      accumulate(total, simulate_vertex_stream(scene.objects[o].mesh.indices, PrimitiveType::TriangleList, cache.policy,
-                                               cache.entries));
+      accumulate(total, simulate_vertex_reuse(scene.objects[o].mesh.indices, PrimitiveType::TriangleList, cache));
     } else {
       const DrawCall& draw = ordered.draws[o];
-      accumulate(total,
-                 simulate_vertex_stream(draw.indices, draw.type, cache.policy, cache.entries, draw.restart_index));
+      accumulate(total, simulate_vertex_reuse(draw.indices, draw.type, cache, draw.restart_index));
     }
   }
   return total;
@@ -142,8 +142,9 @@ Table texture_experiment_table(const TextureExperiment& experiment, const std::v
       {"filter", experiment.render.filter},
       {"wrap", experiment.render.wrap},
       {"cull", experiment.render.cull},
-      {"vertex_cache",
-       std::string(to_string(experiment.vertex_cache.policy)) + ":" + std::to_string(experiment.vertex_cache.entries)},
+      {"vertex_cache", experiment.vertex_cache.batched() ? vertex_reuse_name(experiment.vertex_cache)
+                                                         : std::string(to_string(experiment.vertex_cache.policy)) + ":" +
+                                                               std::to_string(experiment.vertex_cache.entries)},
       {"texgroup_base", experiment.texgroup_base},
       {"texgroup_regions", experiment.texgroup_regions},
       {"texel_bytes", experiment.sweep.layouts.empty() ? 4u : experiment.sweep.layouts.front().texel_bytes},

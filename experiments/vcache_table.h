@@ -8,6 +8,10 @@
 // index and the two indices that prime it, 6 bytes, the per-strip term of Hoppe's section 6 cost
 // (32 bytes per miss + 6 per strip); a swap's repeated index costs 2. A triangle list sends 3
 // indices per triangle (6 bytes).
+// With reuse models (`--model all`, `--cache model=...`, cache_sim/vertex_reuse.h) one row per
+// algorithm and model instead, with the model's warps and SIMD lane use, every model's parameters
+// stated; each algorithm orders once, for `target` (16 when 0), so a row compares one order
+// across models.
 #pragma once
 
 #include <cstdint>
@@ -15,6 +19,7 @@
 #include <vector>
 
 #include "cache_sim/vertex_fetch.h"
+#include "cache_sim/vertex_reuse.h"
 #include "core/table.h"
 #include "reorder/ordering.h"
 
@@ -39,6 +44,8 @@ struct VcacheTableSpec {
   // Non-empty: also write the per-face miss image (experiments/miss_image.h) of the one ordering
   // and cache the table has (InputError unless one algorithm, one policy and one size).
   std::string miss_image;
+  // Reuse models to simulate instead of caches x policies (empty: caches x policies).
+  std::vector<VertexCacheSpec> models;
 };
 
 // The algorithms of an --algo list: "all" (those that apply to the mesh) or "a,b,c"; throws
@@ -47,5 +54,12 @@ std::vector<const ReorderAlgorithm*> select_algorithms(const std::string& list, 
 
 // Throws InputError for an unknown algorithm, a cache of 0 entries, or eviction-charged LRU.
 Table vcache_table(const Mesh& mesh, const std::string& mesh_spec, const VcacheTableSpec& spec);
+
+// From a table with models: shader invocations per triangle (ACMR) with one row per algorithm and
+// one column per model, and each order's rank under each model (1 = fewest invocations).
+Table vcache_model_pivot(const Table& model_table);
+
+// Bars of ACMR per algorithm, one colour per model (gnuplot; PNG or SVG by extension).
+void write_vcache_model_plot(const std::string& path, const Table& model_table);
 
 }  // namespace rastrace

@@ -17,7 +17,7 @@ namespace rastrace {
 
 struct VipmExperimentSpec {
   std::string methods = "all";  // all, or a comma-separated list of vipm_method_names()
-  VertexCacheSpec cache{VertexCachePolicy::Fifo, 16};
+  VertexCacheSpec cache = vertex_cache_spec(VertexCachePolicy::Fifo, 16);
   std::uint32_t lod_step = 1;
   double tolerance = 0.1;           // sliding window's relaxation, of the mean collapse error
   std::uint32_t min_triangles = 0;  // the builder's; 0: its default

@@ -149,6 +149,14 @@ Ordering reorder_greedy(const Mesh& mesh, const ReorderParams& params);
 // a safety cap. ACMR 0.598-0.643, 4-7% below greedy; FIFO only (for LRU the greedy order).
 Ordering reorder_local(const Mesh& mesh, const ReorderParams& params);
 
+// For the batch-based reuse of current GPUs (Kerbl, Kenzel, Ivanchenko, Schmalstieg, Steinberger,
+// "Revisiting the Vertex Cache", HPG 2018): batches grown greedily under their NVIDIA model
+// (cache_sim/kerbl_batch.h, preset kerbl-nv), each next triangle the one adding the fewest shader
+// invocations to the open batch, so each batch of 32 triangles is a compact patch. Cache size and
+// policy are ignored. FIFO 16 is not its measure: see docs/PERFORMANCE.md for it against the
+// FIFO-tuned orders under every preset.
+Ordering reorder_batch(const Mesh& mesh, const ReorderParams& params);
+
 // False when the algorithm cannot order this mesh: "grid" needs a make_grid grid (mesh.grid).
 // Tables skip such pairs; running one anyway throws InputError.
 bool reorder_algorithm_applies(const ReorderAlgorithm& algorithm, const Mesh& mesh);

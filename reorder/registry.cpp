@@ -33,6 +33,8 @@ const std::vector<ReorderAlgorithm>& reorder_algorithms() {
       {"local", "Hoppe 1999, local optimization (reflect/insert perturbations) of the greedy order", reorder_local},
       {"texgroup", "Yang, Mitra, Huang: faces grouped by texture region, each group by a base algorithm",
        reorder_texgroup},
+      {"batch", "compact patches of 32 triangles for batch-based reuse (after Kerbl et al. 2018, NVIDIA model)",
+       reorder_batch},
   };
   return algorithms;
 }

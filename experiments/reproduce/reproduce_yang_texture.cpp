@@ -30,7 +30,7 @@ Misses run_experiment(const std::string& scene, const std::vector<ReplacementPol
   experiment.render.cull = "back";
   experiment.orders = {"strip", "texgroup"};
   experiment.rasters = {"scanline"};
-  experiment.vertex_cache = VertexCacheSpec{VertexCachePolicy::Fifo, 16};
+  experiment.vertex_cache = vertex_cache_spec(VertexCachePolicy::Fifo, 16);
   experiment.sweep.sizes = {1024, 2048, 4096, 8192, 16384};  // 1 KiB .. 16 KiB
   experiment.sweep.lines = {64};
   experiment.sweep.assocs = {0};  // fully associative

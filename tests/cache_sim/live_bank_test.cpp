@@ -40,8 +40,8 @@ TEST(LiveBankSink, VertexStatisticsEqualSimulateVertexStreamForListsAndStrips) {
   const Mesh grid = make_grid(16, 16);
   CacheBankConfig config;
   for (unsigned k : {4u, 12u, 16u, 20u}) {
-    config.vertex.push_back({VertexCachePolicy::Fifo, k});
-    config.vertex.push_back({VertexCachePolicy::Lru, k});
+    config.vertex.push_back(vertex_cache_spec(VertexCachePolicy::Fifo, k));
+    config.vertex.push_back(vertex_cache_spec(VertexCachePolicy::Lru, k));
   }
   LiveBankSink bank(config, {});
   send_index_buffer(bank, 0, PrimitiveType::TriangleList, grid.indices);
@@ -64,7 +64,7 @@ TEST(LiveBankSink, VertexStatisticsEqualSimulateVertexStreamForListsAndStrips) {
 
 TEST(LiveBankSink, EachDrawStartsWithAnEmptyVertexCache) {
   CacheBankConfig config;
-  config.vertex.push_back({VertexCachePolicy::Fifo, 16});
+  config.vertex.push_back(vertex_cache_spec(VertexCachePolicy::Fifo, 16));
   LiveBankSink bank(config, {});
   const std::vector<std::uint32_t> tri = {0, 1, 2};
   send_index_buffer(bank, 0, PrimitiveType::TriangleList, tri);

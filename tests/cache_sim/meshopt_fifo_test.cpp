@@ -44,7 +44,7 @@ TEST(MeshoptFifo, ReorderedFandiskHasTheAcmrMeshoptimizerReports) {
   const meshopt_VertexCacheStatistics theirs =
       meshopt_analyzeVertexCache(tipsy.data(), tipsy.size(), mesh.positions.size(), 16, 0, 0);
   CacheBankConfig config;
-  config.vertex.push_back({VertexCachePolicy::Fifo, 16});
+  config.vertex.push_back(vertex_cache_spec(VertexCachePolicy::Fifo, 16));
   LiveBankSink bank(config, {});
   bank.begin_draw({0, PrimitiveType::TriangleList, kNoRestart});
   std::vector<VertexFetch> fetches;

@@ -32,7 +32,7 @@ TextureExperiment bunny_strip_against_texgroup(const std::string& trace_dir) {
   experiment.render.cull = "back";
   experiment.orders = {"strip", "texgroup"};
   experiment.rasters = {"scanline"};
-  experiment.vertex_cache = VertexCacheSpec{VertexCachePolicy::Fifo, 16};
+  experiment.vertex_cache = vertex_cache_spec(VertexCachePolicy::Fifo, 16);
   experiment.sweep.sizes = {1024, 2048, 4096, 8192, 16384};
   experiment.sweep.lines = {64};
   experiment.sweep.assocs = {0};
@@ -143,7 +143,7 @@ TEST(TextureExperiment, TracesCarryTheSameMetadataAsRenderTraces) {
   experiment.render.cull = "back";
   experiment.orders = {"strip"};
   experiment.rasters = {"tiled8"};
-  experiment.vertex_cache = VertexCacheSpec{VertexCachePolicy::Fifo, 16};
+  experiment.vertex_cache = vertex_cache_spec(VertexCachePolicy::Fifo, 16);
   experiment.sweep.sizes = {1024};
   experiment.trace_dir = dir.file("texsweep");
   const std::vector<TextureRun> runs = run_texture_experiment(experiment);
