@@ -68,7 +68,7 @@ std::string vertex_reuse_preset_names() {
   return out;
 }
 
-void set_model(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+void set_vertex_model(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
   for (const std::string& v : values) {
     if (v == "all") {
       for (const VertexReusePreset& preset : vertex_reuse_presets()) push_unique(s.models, std::string(preset.name));
@@ -192,8 +192,8 @@ void set_pixel(CacheSpec& s, const std::vector<std::string>& values, const Conte
 
 // ATTILA's depth and colour caches (del Barrio et al. 2006): 4 ways of 16 lines (ATTILA counts
 // lines per way), each line an 8x8-pixel tile of 4-byte pixels: 256 B lines, 16 KiB, LRU.
-void set_model(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
-  if (values.front() != "attila") bad_value(c, "model", values.front(), "attila");
+void set_byte_model(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  if (values.size() != 1 || values.front() != "attila") bad_value(c, "model", values.front(), "attila");
   s.sizes = {16 * 1024};
   s.lines = {256};
   s.assocs = {4};
@@ -212,9 +212,13 @@ void set_stride(CacheSpec& s, const std::vector<std::string>& values, const Cont
 // Vertex keys first, then byte keys, in the order the help lists them.
 constexpr KeyRule kKeys[] = {
     {"entries", kVertexKey, true, "1..1048576, e.g. entries=16 or entries=4..64", set_entries, nullptr},
-    {"model", kVertexKey, true,
-     "a reuse-model preset: nv-pascal|nv-maxwell|amd-gcn|intel|kerbl-nv|kerbl-nv-gl|kerbl-amd|kerbl-intel|all",
-     set_model, nullptr},
+    // A vertex reuse preset or, with source=depth|colour, a framebuffer cache's model: the value
+    // tells the cache's kind (byte_model_name).
+    {"model", kBothKinds, true,
+     "a reuse-model preset (nv-pascal|nv-maxwell|amd-gcn|intel|kerbl-nv|kerbl-nv-gl|kerbl-amd|kerbl-intel|all), or "
+     "attila: ATTILA's depth and colour caches, size=16KiB,line=256B,assoc=4,policy=lru,layout=block8 (other keys "
+     "override)",
+     set_vertex_model, set_byte_model},
     {"warp", kVertexKey, true, "vertices per warp, flushing the FIFO (0 = none), e.g. warp=32", set_warp, nullptr},
     {"primgroup", kVertexKey, true, "primitives per warp, flushing the FIFO (0 = none), e.g. primgroup=32",
      set_primgroup, nullptr},
@@ -230,10 +234,6 @@ constexpr KeyRule kKeys[] = {
     {"source", kByteKey, false, "texel|vertex|address|depth|colour", nullptr, set_source},
     {"stride", kByteKey, false, "bytes per vertex for source=vertex, e.g. stride=32B", nullptr, set_stride},
     {"pixel", kByteKey, false, "bytes per pixel for source=depth|colour, e.g. pixel=4B", nullptr, set_pixel},
-    {"model", kByteKey, false,
-     "attila: ATTILA's depth and colour caches, size=16KiB,line=256B,assoc=4,policy=lru,layout=block8 "
-     "(other keys override)",
-     nullptr, set_model},
 };
 
 std::string key_names() {
@@ -339,8 +339,10 @@ CacheSpec parse_cache_spec(const std::string& text, const std::string& option) {
   const KeyRule* vertex_key = nullptr;
   const KeyRule* byte_key = nullptr;
   for (const Item& item : items) {
-    if (item.key->kinds == kVertexKey) vertex_key = item.key;
-    if (item.key->kinds == kByteKey && !byte_key) byte_key = item.key;
+    unsigned kinds = item.key->kinds;
+    if (std::string(item.key->name) == "model") kinds = item.values.front() == "attila" ? kByteKey : kVertexKey;
+    if (kinds == kVertexKey) vertex_key = item.key;
+    if (kinds == kByteKey && !byte_key) byte_key = item.key;
   }
   if (vertex_key && byte_key)
     throw InputError(c.where(std::string(vertex_key->name) + " (a vertex cache) and " + byte_key->name +

@@ -112,8 +112,8 @@ TEST(CacheSpec, VertexAlternativesExpandPolicyThenEntries) {
 
 TEST(CacheSpec, ErrorsNameTheOptionTheSpecAndWhatIsAccepted) {
   EXPECT_EQ(error_of("size=16KiB,lines=64B"),
-            "--cache 'size=16KiB,lines=64B': unknown key 'lines': expected one of entries, size, line, assoc, policy, "
-            "layout, texel, align, seed, source, stride, pixel, model");
+            "--cache 'size=16KiB,lines=64B': unknown key 'lines': expected one of entries, model, warp, primgroup, "
+            "size, line, assoc, policy, layout, texel, align, seed, source, stride, pixel");
   EXPECT_EQ(error_of("size=16KiB,size=8KiB"), "--cache 'size=16KiB,size=8KiB': key 'size' given twice");
   EXPECT_EQ(error_of("size=16KiB,,line=64B"),
             "--cache 'size=16KiB,,line=64B': empty item; expected key=value items separated by ','");
@@ -122,7 +122,8 @@ TEST(CacheSpec, ErrorsNameTheOptionTheSpecAndWhatIsAccepted) {
             "spec");
   EXPECT_EQ(error_of("line=64B,assoc=4", "--tcache"),
             "--tcache 'line=64B,assoc=4': missing size=...: a byte cache needs its capacity, e.g. size=16KiB");
-  EXPECT_THAT(error_of("policy=fifo"), HasSubstr("missing entries=... (a vertex cache, e.g. entries=16,policy=fifo)"));
+  EXPECT_THAT(error_of("policy=fifo"),
+              HasSubstr("missing entries=... or model=... (a vertex cache, e.g. entries=16,policy=fifo or model=kerbl-nv)"));
   EXPECT_EQ(error_of("entries=0"), "--cache 'entries=0': entries=0: expected 1..1048576");
   EXPECT_EQ(error_of("entries=2097152"), "--cache 'entries=2097152': entries=2097152: expected 1..1048576");
   EXPECT_EQ(error_of("entries=16,policy=opt"),
@@ -143,9 +144,10 @@ TEST(CacheSpec, ErrorsNameTheOptionTheSpecAndWhatIsAccepted) {
   EXPECT_THAT(error_of("size=3KiB..8KiB"), HasSubstr("a range between two powers of two"));
   EXPECT_THAT(error_of("size=lots"), HasSubstr("--cache size: 'lots': expected a byte size"));
   EXPECT_EQ(error_of(""),
-            "--cache: empty cache spec; expected key=value items (entries, size, line, assoc, policy, "
-            "layout, texel, align, seed, source, stride, pixel, model)");
-  EXPECT_THAT(error_of("size=1KiB,big"), HasSubstr("item 'big': expected key=value, with key one of entries, size"));
+            "--cache: empty cache spec; expected key=value items (entries, model, warp, primgroup, size, line, assoc, "
+            "policy, layout, texel, align, seed, source, stride, pixel)");
+  EXPECT_THAT(error_of("size=1KiB,big"),
+              HasSubstr("item 'big': expected key=value, with key one of entries, model, warp, primgroup, size"));
 }
 
 TEST(CacheSpec, OldSpellingsAreAnsweredWithTheSpecToWrite) {
