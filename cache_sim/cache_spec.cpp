@@ -74,7 +74,7 @@ void set_vertex_model(CacheSpec& s, const std::vector<std::string>& values, cons
       for (const VertexReusePreset& preset : vertex_reuse_presets()) push_unique(s.models, std::string(preset.name));
       continue;
     }
-    if (!find_vertex_reuse_preset(v)) bad_value(c, "model", v, vertex_reuse_preset_names() + " or all");
+    if (!find_vertex_reuse_preset(v)) bad_value(c, "model", v, vertex_reuse_preset_names() + " or all (vertex reuse presets), or attila (a depth or colour cache)");
     push_unique(s.models, v);
   }
 }

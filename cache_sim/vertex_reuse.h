@@ -34,7 +34,7 @@ struct VertexCacheSpec {
   unsigned primgroup = 0;  // warp FIFO: primitives per warp (0 = no limit)
   VertexReuseKind kind = VertexReuseKind::Cache;  // Cache and WarpFifo are told apart by warp/primgroup
   KerblGpu gpu = KerblGpu::NvidiaD3d;             // KerblBatch only
-  std::string preset;                             // the preset name, or "" when spelled out
+  std::string preset{};                           // the preset name, or "" when spelled out
 
   bool batched() const { return kind != VertexReuseKind::Cache; }
 };

@@ -24,7 +24,7 @@
 namespace rastrace {
 
 struct FrameCaches {
-  VertexCacheSpec vertex{VertexCachePolicy::Fifo, 16};
+  VertexCacheSpec vertex = vertex_cache_spec(VertexCachePolicy::Fifo, 16);
   std::uint32_t vertex_bytes = 32;  // per shaded vertex
   std::uint32_t index_bytes = 2;    // per index sent
   TextureCacheSpec texture = default_texture_cache();

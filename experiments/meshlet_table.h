@@ -20,7 +20,7 @@ struct MeshletTableSpec {
   std::string orders = "original";  // one ordering or "a,b,c"
   std::string builders = "all";     // "all" or a list of scan, greedy, spatial, meshopt, meshopt-scan
   MeshletLimits limits;
-  VertexCacheSpec local_cache{VertexCachePolicy::Fifo, 8};  // the in-meshlet ACMR's cache
+  VertexCacheSpec local_cache = vertex_cache_spec(VertexCachePolicy::Fifo, 8);  // the in-meshlet ACMR's cache
   std::uint64_t seed = 1;
   bool with_time = true;
   // Called with every set built (for -o), after its row is measured.

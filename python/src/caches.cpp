@@ -117,7 +117,7 @@ py::object sweep(const std::string& trace, const std::string& cache_text, unsign
     if (cache.kind == CacheKind::Vertex) {
       const TraceSummary summary = summarize_trace(trace);
       auto parameters = trace_parameters(trace, summary);
-      const auto rows = run_vertex_sweep(trace, cache.vertex_policies, cache.entries, !keep_vertex_cache);
+      const auto rows = run_vertex_sweep(trace, vertex_caches(cache), !keep_vertex_cache);
       parameters.emplace_back("vertex_cache_per_draw", keep_vertex_cache ? "kept" : "flushed");
       vertex_table = vertex_cache_table("Post-transform vertex cache sweep", parameters, rows);
     } else {

@@ -227,7 +227,9 @@ TEST(CacheSpec, DepthAndColourCacheErrorsSayWhatFits) {
   EXPECT_THAT(error_of("source=depth,size=4KiB,texel=4B"), HasSubstr("texel= does not apply to a depth cache"));
   EXPECT_THAT(error_of("source=depth,size=4KiB,policy=opt"), HasSubstr("policy=opt"));
   EXPECT_THAT(error_of("source=stencil,size=4KiB"), HasSubstr("texel, vertex, address, depth or colour"));
-  EXPECT_THAT(error_of("model=ati"), HasSubstr("model=ati: expected attila"));
+  EXPECT_THAT(error_of("model=ati"),
+              HasSubstr("model=ati: expected nv-pascal, nv-maxwell, amd-gcn, intel, kerbl-nv, kerbl-nv-gl, kerbl-amd, "
+                        "kerbl-intel or all (vertex reuse presets), or attila (a depth or colour cache)"));
   try {
     parse_framebuffer_cache("model=attila,source=colour", "--zcache", FramebufferBuffer::Depth);
     FAIL() << "no error";
