@@ -1,5 +1,6 @@
 #include "cache_sim/vertex_reuse.h"
 
+#include <algorithm>
 #include <array>
 #include <stdexcept>
 
@@ -154,6 +155,37 @@ std::uint64_t VertexReuseModel::warps() const {
   return std::get<KerblBatch>(state_).warps();
 }
 
+namespace {
+
+// A whole triangle list through meshoptimizer's warp FIFO: the flat loop its analyzer runs (no
+// primitive walk, no model dispatch, stamps sized once), counting what the general walk counts.
+VertexStreamStats simulate_warp_fifo_list(std::span<const std::uint32_t> indices, const VertexCacheSpec& spec) {
+  VertexStreamStats stats;
+  std::size_t vertex_count = 0;
+  for (const std::uint32_t v : indices) vertex_count = std::max(vertex_count, std::size_t{v} + 1);
+  std::vector<std::uint8_t> seen(vertex_count, 0);
+  WarpFifo fifo(spec.entries, spec.warp, spec.primgroup);
+  fifo.reserve(vertex_count);
+  for (std::size_t i = 0; i < indices.size(); i += 3) {
+    const std::uint32_t* t = indices.data() + i;
+    for (unsigned k = 0; k < 3; ++k) {
+      stats.vertices += !seen[t[k]];
+      seen[t[k]] = 1;
+    }
+    const bool degenerate = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+    stats.degenerate += degenerate;
+    stats.triangles += !degenerate;
+    fifo.primitive(t, 3);
+  }
+  stats.lookups = stats.indices_sent = indices.size();
+  stats.misses = fifo.misses();
+  stats.warps = fifo.warps();
+  stats.lane_slots = stats.warps * vertex_reuse_lanes(spec);
+  return stats;
+}
+
+}  // namespace
+
 VertexStreamStats simulate_vertex_reuse(std::span<const std::uint32_t> indices, PrimitiveType type,
                                         const VertexCacheSpec& spec, RestartIndex restart_index) {
   if (spec.kind == VertexReuseKind::Cache) {
@@ -161,6 +193,8 @@ VertexStreamStats simulate_vertex_reuse(std::span<const std::uint32_t> indices, 
     stats.warps = stats.misses > 0;
     return stats;
   }
+  if (spec.kind == VertexReuseKind::WarpFifo && type == PrimitiveType::TriangleList && indices.size() % 3 == 0)
+    return simulate_warp_fifo_list(indices, spec);
   VertexReuseModel model(spec);
   VertexStreamStats stats;
   std::vector<bool> seen;

@@ -11,6 +11,7 @@
 // Intel 128/0/0 (the presets in cache_sim/vertex_reuse.h).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -21,6 +22,10 @@ class WarpFifo {
   // entries >= 1; warp 0 or >= 3; primgroup any (0 = none). InputError otherwise.
   WarpFifo(unsigned entries, unsigned warp, unsigned primgroup);
 
+  // Sizes the stamps for vertex ids below `vertex_count`, so a stream's walk never grows them.
+  void reserve(std::size_t vertex_count) {
+    if (vertex_count > stamps_.size()) stamps_.resize(vertex_count, 0);
+  }
   // One primitive of `count` (3 or 6) fetched indices.
   void primitive(const std::uint32_t* vertices, unsigned count);
   // Executes the open warp and flushes the cache (a draw boundary).
