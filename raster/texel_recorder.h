@@ -3,8 +3,10 @@
 // paid once per kCapacity events. With no sink, recording is a counter increment.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <span>
 
 #include "traces/sink.h"
@@ -41,11 +43,24 @@ class TexelRecorder {
     event.triangle = site.triangle;
     if (size_ == kCapacity) flush();
   }
+  // Records a run of events as record() would one by one: same batches, same calls to the sink.
+  void append(std::span<const TexelAccess> events) {
+    reads_ += events.size();
+    if (!sink_) return;
+    while (!events.empty()) {
+      const std::size_t take = std::min(kCapacity - size_, events.size());
+      std::memcpy(buffer_.data() + size_, events.data(), take * sizeof(TexelAccess));
+      size_ += take;
+      events = events.subspan(take);
+      if (size_ == kCapacity) flush();
+    }
+  }
   void flush() {
     if (sink_ && size_) sink_->texel_accesses(std::span<const TexelAccess>(buffer_.data(), size_));
     size_ = 0;
   }
   std::uint64_t reads() const { return reads_; }
+  EventSink* sink() const { return sink_; }
 
  private:
   EventSink* sink_;

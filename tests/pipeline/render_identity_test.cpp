@@ -4,7 +4,7 @@
 // sizes, every field of every event) and the bytes of the trace file written with small chunks
 // (so that the order of texel, framebuffer and vertex chunks depends on how events interleave)
 // have the digests the single-threaded renderer produced before the multi-threaded one existed.
-// Every thread count must reproduce them: a parallel renderer that reorders one event fails here.
+// Every thread count (1, 2 and 4 here) must reproduce them: a parallel renderer that reorders one event fails here.
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -119,8 +119,9 @@ struct FrameDigests {
   std::uint64_t texels = 0;
 };
 
-FrameDigests render_digests(const Scene& scene, const Config& config, const testing::TempDir& dir) {
+FrameDigests render_digests(const Scene& scene, const Config& config, unsigned threads, const testing::TempDir& dir) {
   RenderOptions options;
+  options.pipeline.raster.threads = threads;
   options.pipeline.raster.traversal = config.traversal;
   options.pipeline.raster.depth_test = config.depth_test;
   options.pipeline.raster.hierarchical_z = config.hierarchical_z;
@@ -194,13 +195,14 @@ const FrameDigests* expected(const std::string& scene, const std::string& config
   return nullptr;
 }
 
-TEST(RenderIdentity, ImagesEventsAndTraceFilesEqualTheSingleThreadedRenderersToTheBit) {
+// Renders every scene in every configuration with `threads` raster threads and compares.
+void expect_pinned_digests(unsigned threads) {
   const testing::TempDir dir;
   const bool print = std::getenv("RASTRACE_PRINT_DIGESTS") != nullptr;
   for (const auto& [name, scene] : identity_scenes()) {
     for (const Config& config : kConfigs) {
-      SCOPED_TRACE(name + " " + config.name);
-      const FrameDigests got = render_digests(scene, config, dir);
+      SCOPED_TRACE(name + " " + config.name + " threads " + std::to_string(threads));
+      const FrameDigests got = render_digests(scene, config, threads, dir);
       if (print) {
         std::printf("    {\"%s\", \"%s\", {0x%016llxull, 0x%016llxull, 0x%016llxull, %llu}},\n", name.c_str(),
                     config.name, static_cast<unsigned long long>(got.image), static_cast<unsigned long long>(got.calls),
@@ -216,6 +218,12 @@ TEST(RenderIdentity, ImagesEventsAndTraceFilesEqualTheSingleThreadedRenderersToT
     }
   }
 }
+
+TEST(RenderIdentity, OneThreadEqualsThePinnedImagesEventsAndTraceFilesToTheBit) { expect_pinned_digests(1); }
+
+TEST(RenderIdentity, TwoThreadsEqualThePinnedImagesEventsAndTraceFilesToTheBit) { expect_pinned_digests(2); }
+
+TEST(RenderIdentity, FourThreadsEqualThePinnedImagesEventsAndTraceFilesToTheBit) { expect_pinned_digests(4); }
 
 }  // namespace
 }  // namespace rastrace
