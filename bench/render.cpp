@@ -200,6 +200,7 @@ void BM_Rastrace(benchmark::State& state) {
   std::filesystem::remove(path);
   report(state, fragments, best.wall);
   state.counters["threads"] = static_cast<double>(options.pipeline.raster.threads);
+  state.counters["process_cpu_ms"] = best.cpu * 1e3;  // all of rastrace's threads
   state.counters["vs_llvmpipe_1t"] = llvmpipe.wall / best.wall;
   if (!every_core) state.counters["vs_llvmpipe_1t_cpu"] = llvmpipe.cpu / best.cpu;
   if (tracing == 1) state.counters["events"] = static_cast<double>(events);

@@ -10,13 +10,15 @@ class ParallelRasterizer::OrderedSink final : public EventSink {
  public:
   explicit OrderedSink(ParallelRasterizer& owner) : owner_(owner) {}
   void begin_draw(const DrawInfo& draw) override {
-    owner_.steps_.push_back({StepKind::BeginDraw, static_cast<std::uint32_t>(owner_.draws_.size()), 0});
-    owner_.draws_.push_back(draw);
+    Batch& batch = *owner_.filling_;
+    batch.steps.push_back({StepKind::BeginDraw, static_cast<std::uint32_t>(batch.draws.size()), 0});
+    batch.draws.push_back(draw);
   }
   void vertex_fetches(std::span<const VertexFetch> fetches) override {
-    const auto first = static_cast<std::uint32_t>(owner_.fetches_.size());
-    owner_.fetches_.insert(owner_.fetches_.end(), fetches.begin(), fetches.end());
-    owner_.steps_.push_back({StepKind::Fetches, first, static_cast<std::uint32_t>(owner_.fetches_.size())});
+    Batch& batch = *owner_.filling_;
+    const auto first = static_cast<std::uint32_t>(batch.fetches.size());
+    batch.fetches.insert(batch.fetches.end(), fetches.begin(), fetches.end());
+    batch.steps.push_back({StepKind::Fetches, first, static_cast<std::uint32_t>(batch.fetches.size())});
   }
   void texel_accesses(std::span<const TexelAccess> accesses) override {
     owner_.finish();
@@ -27,7 +29,7 @@ class ParallelRasterizer::OrderedSink final : public EventSink {
     owner_.sink_->framebuffer_accesses(accesses);
   }
   bool wants_framebuffer_events() const override { return owner_.sink_->wants_framebuffer_events(); }
-  void end_draw() override { owner_.steps_.push_back({StepKind::EndDraw, 0, 0}); }
+  void end_draw() override { owner_.filling_->steps.push_back({StepKind::EndDraw, 0, 0}); }
   void address_accesses(std::span<const AddressAccess> accesses) override {
     owner_.finish();
     owner_.sink_->address_accesses(accesses);
@@ -87,13 +89,22 @@ ParallelRasterizer::ParallelRasterizer(Framebuffer& framebuffer, const RasterOpt
   }
   for (unsigned w = 0; w < pool_.size(); ++w) workers_.push_back(std::make_unique<Worker>(sink_));
   const std::size_t tiles = static_cast<std::size_t>(tile_columns_) * static_cast<std::size_t>(tile_rows_);
-  bins_.resize(tiles);
-  tile_events_.resize(tiles);
+  for (Batch& batch : batches_) {
+    batch.bins.resize(tiles);
+    batch.tile_events.resize(tiles);
+    batch.triangles.reserve(kBatchTriangles);
+  }
   cursors_.resize(tiles);
-  batch_.reserve(kBatchTriangles);
+  draw_tiles_ = [this](unsigned w) {
+    Batch& batch = *drawing_;
+    for (std::size_t i = next_tile_++; i < batch.busy_tiles.size(); i = next_tile_++)
+      rasterize_tile(*workers_[w], batch, batch.busy_tiles[i]);
+  };
 }
 
-ParallelRasterizer::~ParallelRasterizer() = default;
+ParallelRasterizer::~ParallelRasterizer() {
+  if (drawing_) pool_.wait();  // an exception left a batch on the workers
+}
 
 EventSink* ParallelRasterizer::event_sink() { return ordered_.get(); }
 
@@ -106,31 +117,32 @@ void ParallelRasterizer::tile_range(const TriangleSetup& s, int& tx0, int& ty0, 
 
 void ParallelRasterizer::draw(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
                               const TriangleState& state) {
-  Binned& binned = batch_.emplace_back();
+  Batch& batch = *filling_;
+  Binned& binned = batch.triangles.emplace_back();
   if (!setup_triangle(a, b, c, framebuffer_.width(), framebuffer_.height(), traversal_alignment(options_.traversal),
                       binned.setup)) {
-    batch_.pop_back();
+    batch.triangles.pop_back();
     return;
   }
   ++triangles_;
   binned.state = state;
   binned.textured = state.texture != nullptr && !state.texture->levels.empty();
-  const auto index = static_cast<std::uint32_t>(batch_.size() - 1);
+  const auto index = static_cast<std::uint32_t>(batch.triangles.size() - 1);
   int tx0, ty0, tx1, ty1;
   tile_range(binned.setup, tx0, ty0, tx1, ty1);
   for (int ty = ty0; ty <= ty1; ++ty)
     for (int tx = tx0; tx <= tx1; ++tx)
-      bins_[static_cast<std::size_t>(ty) * static_cast<std::size_t>(tile_columns_) + static_cast<std::size_t>(tx)]
+      batch.bins[static_cast<std::size_t>(ty) * static_cast<std::size_t>(tile_columns_) + static_cast<std::size_t>(tx)]
           .push_back(index);
-  if (recording_) steps_.push_back({StepKind::Triangle, index, 0});
-  if (batch_.size() >= kBatchTriangles) run_batch();
+  if (recording_) batch.steps.push_back({StepKind::Triangle, index, 0});
+  if (batch.triangles.size() >= kBatchTriangles) run_batch(false);
 }
 
 void ParallelRasterizer::flush() {
-  if (recording_) steps_.push_back({StepKind::Flush, 0, 0});
+  if (recording_) filling_->steps.push_back({StepKind::Flush, 0, 0});
 }
 
-void ParallelRasterizer::finish() { run_batch(); }
+void ParallelRasterizer::finish() { run_batch(true); }
 
 RasterStats ParallelRasterizer::stats() const {
   RasterStats total;
@@ -148,23 +160,46 @@ RasterStats ParallelRasterizer::stats() const {
   return total;
 }
 
-void ParallelRasterizer::run_batch() {
-  busy_tiles_.clear();
-  for (std::size_t t = 0; t < bins_.size(); ++t)
-    if (!bins_[t].empty()) busy_tiles_.push_back(t);
-  if (!busy_tiles_.empty()) {
-    std::atomic<std::size_t> next{0};
-    pool_.run([&](unsigned w) {
-      for (std::size_t i = next++; i < busy_tiles_.size(); i = next++) rasterize_tile(*workers_[w], busy_tiles_[i]);
-    });
+void ParallelRasterizer::complete_drawing() {
+  if (!drawing_) return;
+  std::exception_ptr own;
+  try {
+    draw_tiles_(0);
+  } catch (...) {
+    own = std::current_exception();
   }
-  if (recording_) replay();
-  for (const std::size_t t : busy_tiles_) bins_[t].clear();
-  batch_.clear();
+  Batch& batch = *drawing_;
+  pool_.wait();
+  drawing_ = nullptr;  // only now: a worker that starts late still reads it
+  if (own) std::rethrow_exception(own);
+  if (recording_) replay(batch);
+  clear(batch);
 }
 
-void ParallelRasterizer::rasterize_tile(Worker& worker, std::size_t tile) {
-  TileEvents& out = tile_events_[tile];
+void ParallelRasterizer::run_batch(bool wait) {
+  complete_drawing();
+  Batch& batch = *filling_;
+  batch.busy_tiles.clear();
+  for (std::size_t t = 0; t < batch.bins.size(); ++t)
+    if (!batch.bins[t].empty()) batch.busy_tiles.push_back(t);
+  drawing_ = &batch;
+  next_tile_ = 0;
+  filling_ = filling_ == &batches_[0] ? &batches_[1] : &batches_[0];
+  pool_.start(draw_tiles_);
+  if (wait) complete_drawing();
+}
+
+void ParallelRasterizer::clear(Batch& batch) {
+  for (const std::size_t t : batch.busy_tiles) batch.bins[t].clear();
+  batch.busy_tiles.clear();
+  batch.triangles.clear();
+  batch.steps.clear();
+  batch.draws.clear();
+  batch.fetches.clear();
+}
+
+void ParallelRasterizer::rasterize_tile(Worker& worker, Batch& batch, std::size_t tile) {
+  TileEvents& out = batch.tile_events[tile];
   out.texels.clear();
   out.framebuffer.clear();
   out.quads.clear();
@@ -177,8 +212,8 @@ void ParallelRasterizer::rasterize_tile(Worker& worker, std::size_t tile) {
   const std::uint64_t texel_base = worker.texels.reads();
   const std::uint64_t event_base = worker.framebuffer_events.records();
   const bool debug = framebuffer_.has_debug_planes();
-  for (const std::uint32_t index : bins_[tile]) {
-    const Binned& triangle = batch_[index];
+  for (const std::uint32_t index : batch.bins[tile]) {
+    const Binned& triangle = batch.triangles[index];
     if (triangle.textured) {
       if (debug)
         rasterize_in_tile<true, true>(worker, triangle, clip, out, texel_base, event_base);
@@ -213,18 +248,18 @@ void ParallelRasterizer::rasterize_in_tile(Worker& worker, const Binned& triangl
   });
 }
 
-void ParallelRasterizer::replay() {
-  for (const std::size_t t : busy_tiles_) cursors_[t] = TileCursor{};
-  for (const Step& step : steps_) {
+void ParallelRasterizer::replay(Batch& batch) {
+  for (const std::size_t t : batch.busy_tiles) cursors_[t] = TileCursor{};
+  for (const Step& step : batch.steps) {
     switch (step.kind) {
       case StepKind::BeginDraw:
-        sink_->begin_draw(draws_[step.first]);
+        sink_->begin_draw(batch.draws[step.first]);
         break;
       case StepKind::Fetches:
-        sink_->vertex_fetches(std::span<const VertexFetch>(fetches_.data() + step.first, step.last - step.first));
+        sink_->vertex_fetches(std::span<const VertexFetch>(batch.fetches.data() + step.first, step.last - step.first));
         break;
       case StepKind::Triangle:
-        emit_triangle(step.first);
+        emit_triangle(batch, step.first);
         break;
       case StepKind::Flush:
         texels_out_.flush();
@@ -235,9 +270,6 @@ void ParallelRasterizer::replay() {
         break;
     }
   }
-  steps_.clear();
-  draws_.clear();
-  fetches_.clear();
 }
 
 void ParallelRasterizer::emit_quad(const TileEvents& tile, TileCursor& cursor, const QuadMark& mark) {
@@ -258,9 +290,9 @@ void ParallelRasterizer::emit_quad(const TileEvents& tile, TileCursor& cursor, c
   }
 }
 
-void ParallelRasterizer::emit_triangle(std::uint32_t triangle) {
+void ParallelRasterizer::emit_triangle(Batch& batch, std::uint32_t triangle) {
   int tx0, ty0, tx1, ty1;
-  tile_range(batch_[triangle].setup, tx0, ty0, tx1, ty1);
+  tile_range(batch.triangles[triangle].setup, tx0, ty0, tx1, ty1);
   // The tiles with quads of this triangle, and where its quads end in each.
   constexpr int kInline = 16;
   std::size_t tiles_inline[kInline], ends_inline[kInline];
@@ -280,14 +312,14 @@ void ParallelRasterizer::emit_triangle(std::uint32_t triangle) {
       const std::size_t t =
           static_cast<std::size_t>(ty) * static_cast<std::size_t>(tile_columns_) + static_cast<std::size_t>(tx);
       TileCursor& cursor = cursors_[t];
-      const std::size_t end = tile_events_[t].triangle_ends[cursor.triangle++];
+      const std::size_t end = batch.tile_events[t].triangle_ends[cursor.triangle++];
       if (end == cursor.quad) continue;
       tiles[active] = t;
       ends[active] = end;
       ++active;
     }
   if (active == 1) {
-    const TileEvents& tile = tile_events_[tiles[0]];
+    const TileEvents& tile = batch.tile_events[tiles[0]];
     TileCursor& cursor = cursors_[tiles[0]];
     while (cursor.quad < ends[0]) emit_quad(tile, cursor, tile.quads[cursor.quad]);
     return;
@@ -299,14 +331,14 @@ void ParallelRasterizer::emit_triangle(std::uint32_t triangle) {
     for (int i = 0; i < active; ++i) {
       const TileCursor& cursor = cursors_[tiles[i]];
       if (cursor.quad == ends[i]) continue;
-      const std::uint32_t key = tile_events_[tiles[i]].quads[cursor.quad].key;
+      const std::uint32_t key = batch.tile_events[tiles[i]].quads[cursor.quad].key;
       if (best < 0 || key < best_key) {
         best = i;
         best_key = key;
       }
     }
     if (best < 0) return;
-    const TileEvents& tile = tile_events_[tiles[best]];
+    const TileEvents& tile = batch.tile_events[tiles[best]];
     TileCursor& cursor = cursors_[tiles[best]];
     emit_quad(tile, cursor, tile.quads[cursor.quad]);
   }

@@ -8,9 +8,15 @@
 // key in the traversal order (raster/traversal.h), through recorders that batch exactly as the
 // serial rasterizer's do. The sink therefore receives the same calls, with the same batches, at
 // any thread count, and a trace file's bytes do not change.
+//
+// Batches are double-buffered: while the workers draw one, the calling thread sets up and bins
+// the next; when that one is full it joins the workers on what is left of the first, replays it,
+// and hands over the second. Tiles of one batch are drawn only after every tile of the one before.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -66,18 +72,24 @@ class ParallelRasterizer {
   enum class StepKind : std::uint8_t { BeginDraw, Fetches, Triangle, Flush, EndDraw };
   struct Step {
     StepKind kind;
-    std::uint32_t first, last;  // Fetches: range in fetches_; Triangle: index in batch_; BeginDraw: in draws_
+    std::uint32_t first, last;  // Fetches: range in the batch's fetches; Triangle: its index; BeginDraw: in draws
   };
 
   void tile_range(const TriangleSetup& s, int& tx0, int& ty0, int& tx1, int& ty1) const;
-  void run_batch();
-  void rasterize_tile(Worker& worker, std::size_t tile);
+  struct Batch;
+  // Starts drawing the filled batch on the workers (after finishing the one before); with
+  // `wait`, draws it to the end.
+  void run_batch(bool wait);
+  // Joins the workers on the batch being drawn, waits for it, replays it.
+  void complete_drawing();
+  void rasterize_tile(Worker& worker, Batch& batch, std::size_t tile);
   template <bool kTextured, bool kDebug>
   void rasterize_in_tile(Worker& worker, const Binned& triangle, const PixelRect& clip, TileEvents& out,
                          std::uint64_t texel_base, std::uint64_t event_base);
-  void replay();
-  void emit_triangle(std::uint32_t triangle);
+  void replay(Batch& batch);
+  void emit_triangle(Batch& batch, std::uint32_t triangle);
   void emit_quad(const TileEvents& tile, TileCursor& cursor, const QuadMark& mark);
+  void clear(Batch& batch);
 
   Framebuffer& framebuffer_;
   RasterOptions options_;
@@ -90,15 +102,22 @@ class ParallelRasterizer {
   int tile_columns_, tile_rows_;
   std::uint64_t triangles_ = 0;
 
-  // The pending batch.
-  std::vector<Binned> batch_;
-  std::vector<std::vector<std::uint32_t>> bins_;  // per tile: indices into batch_, in draw order
-  std::vector<std::size_t> busy_tiles_;
-  std::vector<TileEvents> tile_events_;
+  // A batch of triangles with everything its replay needs.
+  struct Batch {
+    std::vector<Binned> triangles;
+    std::vector<std::vector<std::uint32_t>> bins;  // per tile: indices into triangles, in draw order
+    std::vector<std::size_t> busy_tiles;
+    std::vector<TileEvents> tile_events;
+    std::vector<Step> steps;
+    std::vector<DrawInfo> draws;
+    std::vector<VertexFetch> fetches;
+  };
+  Batch batches_[2];
+  Batch* filling_ = &batches_[0];  // receives triangles and steps
+  Batch* drawing_ = nullptr;       // being drawn by the workers, if any
+  std::atomic<std::size_t> next_tile_{0};
+  std::function<void(unsigned)> draw_tiles_;  // the workers' job: tiles of *drawing_
   std::vector<TileCursor> cursors_;
-  std::vector<Step> steps_;
-  std::vector<DrawInfo> draws_;
-  std::vector<VertexFetch> fetches_;
 
   // The replay's recorders: batch the merged events as the serial rasterizer's recorders do.
   TexelRecorder texels_out_;

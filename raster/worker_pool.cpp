@@ -1,5 +1,7 @@
 #include "raster/worker_pool.h"
 
+#include <utility>
+
 namespace rastrace {
 
 WorkerPool::WorkerPool(unsigned threads) {
@@ -15,7 +17,7 @@ WorkerPool::~WorkerPool() {
   for (std::thread& t : threads_) t.join();
 }
 
-void WorkerPool::run(const std::function<void(unsigned)>& job) {
+void WorkerPool::start(const std::function<void(unsigned)>& job) {
   {
     const std::lock_guard lock(mutex_);
     job_ = &job;
@@ -24,17 +26,25 @@ void WorkerPool::run(const std::function<void(unsigned)>& job) {
     ++generation_;
   }
   start_.notify_all();
+}
+
+void WorkerPool::wait() {
+  std::unique_lock lock(mutex_);
+  done_.wait(lock, [this] { return running_ == 0; });
+  job_ = nullptr;
+  if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
+}
+
+void WorkerPool::run(const std::function<void(unsigned)>& job) {
+  start(job);
   std::exception_ptr own;
   try {
     job(0);
   } catch (...) {
     own = std::current_exception();
   }
-  std::unique_lock lock(mutex_);
-  done_.wait(lock, [this] { return running_ == 0; });
-  job_ = nullptr;
+  wait();
   if (own) std::rethrow_exception(own);
-  if (error_) std::rethrow_exception(error_);
 }
 
 void WorkerPool::loop(unsigned worker) {

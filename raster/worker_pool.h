@@ -23,6 +23,11 @@ class WorkerPool {
   // Calls job(worker) once on every worker (0 is the calling thread) and returns when all have
   // returned. An exception from a job is rethrown here (the first one).
   void run(const std::function<void(unsigned)>& job);
+  // The same in two halves: start() has workers 1.. call job (which must outlive wait()) and
+  // returns at once; the caller may call job(0) itself; wait() returns when they have all
+  // returned, rethrowing the first exception.
+  void start(const std::function<void(unsigned)>& job);
+  void wait();
 
  private:
   void loop(unsigned worker);
