@@ -22,6 +22,8 @@ void add_scene_render_flags(CLI::App& command, SceneRenderFlags& flags) {
                   "early (before shading and texturing, as GPUs do for opaque geometry) or late")
       ->capture_default_str();
   command.add_flag("--hiz", flags.hiz, "Hierarchical Z: reject 2x2 quads against each 8x8 tile's farthest depth");
+  command.add_option("--threads", flags.threads,
+                     "Raster threads (default: every core); images and traces are the same for any count");
   command.add_option("--order", flags.order, "Triangle ordering (rastrace reorder --help lists them)")
       ->capture_default_str();
   command.add_option("--order-cache", flags.order_cache, "Cache size the ordering optimizes for")

@@ -1,6 +1,8 @@
 #include "experiments/render_settings.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <thread>
 
 #include "core/error.h"
 #include "raster/rasterizer.h"
@@ -37,6 +39,7 @@ RenderOptions render_options_from(const SceneRenderFlags& flags) {
   options.pipeline.raster.traversal = parse_traversal(flags.raster);
   options.pipeline.raster.depth_test = parse_depth_test(flags.depth_test);
   options.pipeline.raster.hierarchical_z = flags.hiz;
+  options.pipeline.raster.threads = flags.threads ? flags.threads : std::max(1u, std::thread::hardware_concurrency());
   options.pipeline.cull = parse_cull_mode(flags.cull);
   options.pipeline.lighting.enabled = flags.lighting;
   options.pipeline.lighting.direction = glm::vec3(0.3f, 0.5f, 1.0f);

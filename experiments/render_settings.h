@@ -25,6 +25,7 @@ struct SceneRenderFlags {
   unsigned order_cache = 16;
   std::string depth_test = "early";  // early | late (raster/rasterizer.h)
   bool hiz = false;                  // hierarchical Z on 8x8 tiles
+  unsigned threads = 0;              // raster threads; 0: every core (the output does not depend on it)
 };
 
 // The scene with the size override applied.

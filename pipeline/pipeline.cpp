@@ -26,6 +26,9 @@ Pipeline::Pipeline(Framebuffer& framebuffer, const PipelineOptions& options, Eve
       rasterizer_(framebuffer, options.raster, sink),
       clipper_(framebuffer.width(), framebuffer.height(), options.guard_band),
       cache_(options.cache_policy, options.cache_entries) {
+  // With several raster threads, the pipeline's own events wait in the rasterizer's ordered sink
+  // until the triangles before them are drawn.
+  sink_ = rasterizer_.event_sink();
   fetch_buffer_.reserve(kFetchBatch);
 }
 
@@ -204,6 +207,7 @@ void Pipeline::triangle(const Mesh& /*mesh*/, std::uint32_t a, std::uint32_t b, 
 void Pipeline::finish() {
   flush_fetches();
   rasterizer_.flush();
+  rasterizer_.finish();
   if (sink_) sink_->finish();
 }
 

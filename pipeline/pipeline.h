@@ -96,7 +96,8 @@ class Pipeline {
   // Draws `call` with the mesh's vertices placed by `model`. Throws InputError for an index
   // >= the vertex count, a material or texture index out of range.
   void draw(const Mesh& mesh, const glm::mat4& model, const DrawCall& call, std::span<const Texture> textures);
-  // Flushes events and calls the sink's finish().
+  // Flushes events, draws what the rasterizer still holds (RasterOptions::threads > 1) and calls
+  // the sink's finish(). With several raster threads the framebuffer is complete only after it.
   void finish();
 
   const PipelineStats& stats() const { return stats_; }

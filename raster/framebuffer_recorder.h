@@ -4,8 +4,10 @@
 // is one predictable branch.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <span>
 
 #include "traces/sink.h"
@@ -26,6 +28,7 @@ class FramebufferRecorder {
   bool active() const { return sink_ != nullptr; }
   void record(FramebufferOp op, int quad_x, int quad_y, unsigned mask, std::uint32_t triangle) {
     if (!sink_) return;
+    ++records_;
     FramebufferAccess& event = buffer_[size_++];
     event.x = static_cast<std::uint16_t>(quad_x);
     event.y = static_cast<std::uint16_t>(quad_y);
@@ -34,6 +37,20 @@ class FramebufferRecorder {
     event.triangle = triangle;
     if (size_ == kCapacity) flush();
   }
+  // Records a run of events as record() would one by one: same batches, same calls to the sink.
+  void append(std::span<const FramebufferAccess> events) {
+    if (!sink_) return;
+    records_ += events.size();
+    while (!events.empty()) {
+      const std::size_t take = std::min(kCapacity - size_, events.size());
+      std::memcpy(buffer_.data() + size_, events.data(), take * sizeof(FramebufferAccess));
+      size_ += take;
+      events = events.subspan(take);
+      if (size_ == kCapacity) flush();
+    }
+  }
+  // Events recorded (0 while inactive).
+  std::uint64_t records() const { return records_; }
   void flush() {
     if (sink_ && size_) sink_->framebuffer_accesses(std::span<const FramebufferAccess>(buffer_.data(), size_));
     size_ = 0;
@@ -42,6 +59,7 @@ class FramebufferRecorder {
  private:
   EventSink* sink_;
   std::size_t size_ = 0;
+  std::uint64_t records_ = 0;
   std::array<FramebufferAccess, kCapacity> buffer_;
 };
 

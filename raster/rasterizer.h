@@ -22,35 +22,18 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
-
-#include <glm/vec2.hpp>
-#include <glm/vec4.hpp>
 
 #include "raster/framebuffer.h"
 #include "raster/framebuffer_recorder.h"
 #include "raster/sampler.h"
 #include "raster/texel_recorder.h"
+#include "raster/traversal.h"
+#include "raster/triangle_setup.h"
 #include "traces/sink.h"
 
 namespace rastrace {
-
-enum class Traversal : std::uint8_t {
-  Scanline,  // quad rows top to bottom, left to right in each
-  Tiled8,    // 8x8-pixel tiles row-major over the bounding box, quads row-major inside a tile
-};
-// "scanline" or "tiled8" (alias "tiled"); throws InputError otherwise.
-Traversal parse_traversal(const std::string& text);
-const char* to_string(Traversal traversal);
-
-// A vertex after the perspective divide and the viewport transform.
-struct RasterVertex {
-  float x = 0.0f, y = 0.0f;  // image coordinates in pixels
-  float z = 0.0f;            // window depth in [0, 1]
-  float inv_w = 1.0f;        // 1 / clip-space w
-  glm::vec4 colour{1.0f};
-  glm::vec2 uv{0.0f};
-};
 
 // What a triangle is drawn with.
 struct TriangleState {
@@ -72,6 +55,9 @@ struct RasterOptions {
   SamplerState sampler;
   DepthTest depth_test = DepthTest::Early;
   bool hierarchical_z = false;  // reject quads against each 8x8 tile's farthest depth
+  // 1: draw each triangle as it arrives. More: bin triangles to screen tiles drawn by this many
+  // threads (raster/parallel_rasterizer.h); images, statistics and events are the same.
+  unsigned threads = 1;
 };
 
 struct RasterStats {
@@ -85,41 +71,45 @@ struct RasterStats {
   std::uint64_t texel_reads = 0;
 };
 
+class HierarchicalZ;
+class ParallelRasterizer;
+
 class Rasterizer {
  public:
   // `sink` may be nullptr (no events); the framebuffer must outlive the rasterizer.
   Rasterizer(Framebuffer& framebuffer, const RasterOptions& options, EventSink* sink);
+  ~Rasterizer();
+  Rasterizer(const Rasterizer&) = delete;
+  Rasterizer& operator=(const Rasterizer&) = delete;
+
+  // Where the caller sends its own events (draws, vertex fetches, finish) so that they stay in
+  // order with the rasterizer's: the sink itself with one thread; with more, a sink that holds
+  // them until the triangles drawn before them have been rasterized. nullptr without a sink.
+  EventSink* event_sink();
 
   // Any winding; zero-area triangles draw nothing. Vertices must lie within +-2^22 pixels
   // (the pipeline's guard band keeps them far inside).
   void draw(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c, const TriangleState& state);
   // Hands buffered texel events to the sink (call at the end of a draw).
-  void flush() {
-    recorder_.flush();
-    framebuffer_recorder_.flush();
-  }
+  void flush();
+  // Draws everything still pending (threads > 1; event_sink()'s finish() does it too). The
+  // framebuffer and stats() are complete after it.
+  void finish();
 
-  RasterStats stats() const {
-    RasterStats s = stats_;
-    s.texel_reads = recorder_.reads();
-    return s;
-  }
+  RasterStats stats() const;
   const RasterOptions& options() const { return options_; }
 
  private:
-  struct Setup;
   template <bool kTextured, bool kDebug>
-  void traverse(const Setup& setup, const TriangleState& state);
-  // The farthest depth stored in an 8x8 tile (hierarchical Z).
-  float tile_max_depth(int tile_x, int tile_y) const;
+  void traverse(const TriangleSetup& setup, const TriangleState& state);
 
   Framebuffer& framebuffer_;
   RasterOptions options_;
   TexelRecorder recorder_;
   FramebufferRecorder framebuffer_recorder_;
   RasterStats stats_;
-  std::vector<float> hiz_;  // per 8x8 tile, row-major: the farthest depth (hierarchical Z only)
-  std::size_t hiz_columns_ = 0;
+  std::unique_ptr<HierarchicalZ> hiz_;            // hierarchical Z only
+  std::unique_ptr<ParallelRasterizer> parallel_;  // threads > 1 only
 };
 
 }  // namespace rastrace

@@ -103,10 +103,7 @@ glm::vec4 sample_linear(const Image& image, unsigned level, const SamplerState& 
   const int x1 = wrap_coordinate(iu + 1, image.width, state.wrap_s);
   const int y0 = wrap_coordinate(iv, image.height, state.wrap_t);
   const int y1 = wrap_coordinate(iv + 1, image.height, state.wrap_t);
-  recorder.record(site, level, x0, y0);
-  recorder.record(site, level, x1, y0);
-  recorder.record(site, level, x0, y1);
-  recorder.record(site, level, x1, y1);
+  recorder.record_footprint(site, level, x0, x1, y0, y1);
   const glm::vec4 t00 = fetch(image, x0, y0), t10 = fetch(image, x1, y0);
   const glm::vec4 t01 = fetch(image, x0, y1), t11 = fetch(image, x1, y1);
   const glm::vec4 top = t00 + (t10 - t00) * a;

@@ -3,8 +3,10 @@
 // paid once per kCapacity events. With no sink, recording is a counter increment.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <span>
 
 #include "traces/sink.h"
@@ -41,17 +43,57 @@ class TexelRecorder {
     event.triangle = site.triangle;
     if (size_ == kCapacity) flush();
   }
+  // Records a run of events as record() would one by one: same batches, same calls to the sink.
+  void append(std::span<const TexelAccess> events) {
+    reads_ += events.size();
+    if (!sink_) return;
+    while (!events.empty()) {
+      const std::size_t take = std::min(kCapacity - size_, events.size());
+      std::memcpy(buffer_.data() + size_, events.data(), take * sizeof(TexelAccess));
+      size_ += take;
+      events = events.subspan(take);
+      if (size_ == kCapacity) flush();
+    }
+  }
+  // The four texels of a bilinear footprint, (x0, y0), (x1, y0), (x0, y1), (x1, y1), with one
+  // branch for the four: they are stored into the buffer's slack, and a full buffer hands the
+  // sink exactly kCapacity events, as four record() calls would.
+  void record_footprint(const TexelSite& site, unsigned level, int x0, int x1, int y0, int y1) {
+    reads_ += 4;
+    if (!sink_) return;
+    TexelAccess event;
+    event.texture = site.texture;
+    event.level = static_cast<std::uint8_t>(level);
+    event.pixel_x = site.pixel_x;
+    event.pixel_y = site.pixel_y;
+    event.triangle = site.triangle;
+    TexelAccess* out = buffer_.data() + size_;
+    const std::uint32_t xs[2] = {static_cast<std::uint32_t>(x0), static_cast<std::uint32_t>(x1)};
+    const std::uint32_t ys[2] = {static_cast<std::uint32_t>(y0), static_cast<std::uint32_t>(y1)};
+    for (int i = 0; i < 4; ++i) {
+      out[i] = event;
+      out[i].x = xs[i & 1];
+      out[i].y = ys[i >> 1];
+    }
+    size_ += 4;
+    if (size_ >= kCapacity) {
+      sink_->texel_accesses(std::span<const TexelAccess>(buffer_.data(), kCapacity));
+      size_ -= kCapacity;
+      std::copy(buffer_.data() + kCapacity, buffer_.data() + kCapacity + size_, buffer_.data());
+    }
+  }
   void flush() {
     if (sink_ && size_) sink_->texel_accesses(std::span<const TexelAccess>(buffer_.data(), size_));
     size_ = 0;
   }
   std::uint64_t reads() const { return reads_; }
+  EventSink* sink() const { return sink_; }
 
  private:
   EventSink* sink_;
   std::size_t size_ = 0;
   std::uint64_t reads_ = 0;
-  std::array<TexelAccess, kCapacity> buffer_;
+  std::array<TexelAccess, kCapacity + 4> buffer_;  // 4: record_footprint's slack
 };
 
 }  // namespace rastrace

@@ -1,7 +1,12 @@
 #include "traces/trace_writer.h"
 
+#include <atomic>
+#include <condition_variable>
 #include <cstring>
+#include <deque>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 
 #include <zstd.h>
 
@@ -24,20 +29,125 @@ void put(std::string& out, T value) {
 }
 }  // namespace
 
+// A full chunk on its way to the file: its records of one kind (the other vectors are empty).
+struct TraceWriter::Chunk {
+  RecordKind kind = RecordKind::Vertex;
+  std::uint8_t flags = 0;
+  std::uint32_t records = 0;
+  std::uint64_t first_record = 0;
+  DrawInfo draw;
+  std::vector<VertexFetch> vertices;
+  std::vector<TexelAccess> texels;
+  std::vector<AddressAccess> addresses;
+  std::vector<FramebufferAccess> framebuffer;
+};
+
 struct TraceWriter::State {
-  explicit State(const std::string& path) : file(path) {}
-  ~State() { ZSTD_freeCCtx(cctx); }
+  State(const std::string& file_path, int level) : file(file_path), path(file_path), zstd_level(level) {}
+  ~State() {
+    stop();
+    ZSTD_freeCCtx(cctx);
+  }
+  void write(const void* data, std::size_t size) {
+    file.stream().write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
+    if (!file.stream()) throw_in_file(path, "write failed (disk full?)");
+    offset += size;
+  }
+  // Encodes, compresses and writes one chunk; runs on the background thread.
+  void write_chunk(const Chunk& chunk) {
+    switch (chunk.kind) {
+      case RecordKind::Vertex:
+        encode_vertex_records(chunk.draw, chunk.vertices, raw);
+        break;
+      case RecordKind::Texel:
+        encode_texel_records(chunk.texels, raw);
+        break;
+      case RecordKind::Address:
+        encode_address_records(chunk.addresses, raw);
+        break;
+      case RecordKind::Framebuffer:
+        encode_framebuffer_records(chunk.framebuffer, raw);
+        break;
+    }
+    const std::size_t bound = ZSTD_compressBound(raw.size());
+    compressed.resize(bound);
+    const std::size_t stored = ZSTD_compressCCtx(cctx, compressed.data(), bound, raw.data(), raw.size(), zstd_level);
+    if (ZSTD_isError(stored)) throw std::runtime_error(std::string("zstd: ") + ZSTD_getErrorName(stored));
+    std::string header;
+    put<std::uint32_t>(header, kChunkTag);
+    put<std::uint8_t>(header, static_cast<std::uint8_t>(chunk.kind));
+    put<std::uint8_t>(header, chunk.flags);
+    put<std::uint16_t>(header, 0);
+    put<std::uint32_t>(header, chunk.records);
+    put<std::uint32_t>(header, static_cast<std::uint32_t>(stored));
+    put<std::uint32_t>(header, static_cast<std::uint32_t>(raw.size()));
+    put<std::uint64_t>(header, chunk.first_record);
+    const std::uint32_t crc = crc32c(compressed.data(), stored, crc32c(header.data(), header.size()));
+    put<std::uint32_t>(header, crc);
+    index.push_back({offset.load(), chunk.first_record, chunk.records, chunk.kind});
+    write(header.data(), header.size());
+    write(compressed.data(), stored);
+  }
+  void run() {
+    for (;;) {
+      Chunk chunk;
+      {
+        std::unique_lock lock(mutex);
+        ready.wait(lock, [this] { return stopping || !queue.empty(); });
+        if (queue.empty()) return;
+        chunk = std::move(queue.front());
+        queue.pop_front();
+      }
+      space.notify_one();
+      std::exception_ptr failure;
+      try {
+        if (!error) write_chunk(chunk);
+      } catch (...) {
+        failure = std::current_exception();
+      }
+      chunk.vertices.clear();
+      chunk.texels.clear();
+      chunk.addresses.clear();
+      chunk.framebuffer.clear();
+      {
+        const std::lock_guard lock(mutex);
+        if (failure && !error) error = failure;
+        spare.push_back(std::move(chunk));
+      }
+      space.notify_one();
+    }
+  }
+  // Writes what is queued and ends the thread (the queue is emptied first).
+  void stop() {
+    {
+      const std::lock_guard lock(mutex);
+      stopping = true;
+    }
+    ready.notify_all();
+    if (thread.joinable()) thread.join();
+  }
+
   AtomicFile file;
   ZSTD_CCtx* cctx = ZSTD_createCCtx();
   std::string path;
+  int zstd_level;
+  std::atomic<std::uint64_t> offset{0};
+  std::vector<ChunkInfo> index;  // the background thread's until it has stopped
+  std::string raw, compressed;
+  std::mutex mutex;
+  std::condition_variable ready, space;
+  std::deque<Chunk> queue;
+  std::vector<Chunk> spare;  // written chunks, their vectors' capacity kept for reuse
+  bool stopping = false;
+  std::exception_ptr error;
+  std::thread thread;
 };
 
 TraceWriter::TraceWriter(const std::string& path, TraceMetadata metadata, TraceWriterOptions options)
     : options_(options) {
   if (options_.chunk_records == 0 || options_.chunk_records > kMaxChunkRecords)
     throw InputError("trace chunk size " + std::to_string(options_.chunk_records) + ": expected 1..16777216 records");
-  state_ = std::make_unique<State>(path);
-  state_->path = path;
+  state_ = std::make_unique<State>(path, options_.zstd_level);
   if (!state_->file.stream()) throw_in_file(path, "cannot open for writing");
   if (metadata.tool_version.empty()) metadata.tool_version = RASTRACE_VERSION;
   const std::string json = metadata_to_json(metadata);
@@ -46,73 +156,77 @@ TraceWriter::TraceWriter(const std::string& path, TraceMetadata metadata, TraceW
   put<std::uint32_t>(header, static_cast<std::uint32_t>(json.size()));
   header += json;
   put<std::uint32_t>(header, crc32c(json.data(), json.size()));
-  write(header.data(), header.size());
+  state_->write(header.data(), header.size());
   vertices_.reserve(options_.chunk_records);
+  state_->thread = std::thread([state = state_.get()] { state->run(); });
 }
 
 TraceWriter::~TraceWriter() = default;
 
-void TraceWriter::write(const void* data, std::size_t size) {
-  state_->file.stream().write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
-  if (!state_->file.stream()) throw_in_file(state_->path, "write failed (disk full?)");
-  offset_ += size;
+std::uint64_t TraceWriter::bytes_written() const { return state_->offset.load(); }
+
+TraceWriter::Chunk TraceWriter::take_spare() {
+  const std::lock_guard lock(state_->mutex);
+  if (state_->spare.empty()) return Chunk{};
+  Chunk chunk = std::move(state_->spare.back());
+  state_->spare.pop_back();
+  return chunk;
 }
 
-void TraceWriter::write_chunk(RecordKind kind, std::uint8_t flags, std::uint32_t records) {
-  const std::size_t bound = ZSTD_compressBound(raw_.size());
-  compressed_.resize(bound);
-  const std::size_t stored =
-      ZSTD_compressCCtx(state_->cctx, compressed_.data(), bound, raw_.data(), raw_.size(), options_.zstd_level);
-  if (ZSTD_isError(stored)) throw std::runtime_error(std::string("zstd: ") + ZSTD_getErrorName(stored));
+void TraceWriter::submit(Chunk& chunk, RecordKind kind, std::uint8_t flags, std::uint32_t records) {
   std::uint64_t& count = counts_[static_cast<int>(kind)];
-  std::string header;
-  put<std::uint32_t>(header, kChunkTag);
-  put<std::uint8_t>(header, static_cast<std::uint8_t>(kind));
-  put<std::uint8_t>(header, flags);
-  put<std::uint16_t>(header, 0);
-  put<std::uint32_t>(header, records);
-  put<std::uint32_t>(header, static_cast<std::uint32_t>(stored));
-  put<std::uint32_t>(header, static_cast<std::uint32_t>(raw_.size()));
-  put<std::uint64_t>(header, count);
-  const std::uint32_t crc = crc32c(compressed_.data(), stored, crc32c(header.data(), header.size()));
-  put<std::uint32_t>(header, crc);
-  index_.push_back({offset_, count, records, kind});
+  chunk.kind = kind;
+  chunk.flags = flags;
+  chunk.records = records;
+  chunk.first_record = count;
   count += records;
-  write(header.data(), header.size());
-  write(compressed_.data(), stored);
+  State& state = *state_;
+  {
+    std::unique_lock lock(state.mutex);
+    state.space.wait(lock, [&] { return state.error || state.queue.size() < kChunksInFlight; });
+    if (state.error) std::rethrow_exception(state.error);
+    state.queue.push_back(std::move(chunk));
+  }
+  state.ready.notify_one();
 }
 
 void TraceWriter::flush_vertices(bool ends_draw) {
   if (!draw_open_) return;
   if (vertices_.empty() && draw_started_ && !ends_draw) return;
-  encode_vertex_records(draw_, vertices_, raw_);
+  const auto records = static_cast<std::uint32_t>(vertices_.size());
+  Chunk chunk = take_spare();
+  chunk.draw = draw_;
+  std::swap(chunk.vertices, vertices_);
+  vertices_.reserve(options_.chunk_records);
   const std::uint8_t flags =
       static_cast<std::uint8_t>((draw_started_ ? 0 : kChunkStartsDraw) | (ends_draw ? kChunkEndsDraw : 0));
-  write_chunk(RecordKind::Vertex, flags, static_cast<std::uint32_t>(vertices_.size()));
-  vertices_.clear();
+  submit(chunk, RecordKind::Vertex, flags, records);
   draw_started_ = true;
   if (ends_draw) draw_open_ = false;
 }
 
 void TraceWriter::flush_texels() {
   if (texels_.empty()) return;
-  encode_texel_records(texels_, raw_);
-  write_chunk(RecordKind::Texel, 0, static_cast<std::uint32_t>(texels_.size()));
-  texels_.clear();
+  const auto records = static_cast<std::uint32_t>(texels_.size());
+  Chunk chunk = take_spare();
+  std::swap(chunk.texels, texels_);
+  submit(chunk, RecordKind::Texel, 0, records);
 }
 
 void TraceWriter::flush_addresses() {
   if (addresses_.empty()) return;
-  encode_address_records(addresses_, raw_);
-  write_chunk(RecordKind::Address, 0, static_cast<std::uint32_t>(addresses_.size()));
-  addresses_.clear();
+  const auto records = static_cast<std::uint32_t>(addresses_.size());
+  Chunk chunk = take_spare();
+  std::swap(chunk.addresses, addresses_);
+  submit(chunk, RecordKind::Address, 0, records);
 }
 
 void TraceWriter::flush_framebuffer() {
   if (framebuffer_.empty()) return;
-  encode_framebuffer_records(framebuffer_, raw_);
-  write_chunk(RecordKind::Framebuffer, 0, static_cast<std::uint32_t>(framebuffer_.size()));
-  framebuffer_.clear();
+  const auto records = static_cast<std::uint32_t>(framebuffer_.size());
+  Chunk chunk = take_spare();
+  std::swap(chunk.framebuffer, framebuffer_);
+  submit(chunk, RecordKind::Framebuffer, 0, records);
 }
 
 void TraceWriter::begin_draw(const DrawInfo& draw) {
@@ -174,26 +288,29 @@ void TraceWriter::finish() {
   flush_texels();
   flush_framebuffer();
   flush_addresses();
+  State& state = *state_;
+  state.stop();
+  if (state.error) std::rethrow_exception(state.error);
   std::string index;
   put<std::uint32_t>(index, kIndexTag);
   put<std::uint32_t>(index, 0);
-  put<std::uint64_t>(index, index_.size());
-  for (const ChunkInfo& c : index_) {
+  put<std::uint64_t>(index, state.index.size());
+  for (const ChunkInfo& c : state.index) {
     put<std::uint64_t>(index, c.offset);
     put<std::uint64_t>(index, c.first_record);
     put<std::uint32_t>(index, c.records);
     put<std::uint8_t>(index, static_cast<std::uint8_t>(c.kind));
     index.append(3, '\0');
   }
-  const std::uint64_t index_offset = offset_;
+  const std::uint64_t index_offset = state.offset.load();
   std::string footer;
   put<std::uint64_t>(footer, index_offset);
   put<std::uint32_t>(footer, crc32c(index.data(), index.size()));
   put<std::uint32_t>(footer, 0);
   footer.append(kTraceEndMagic, 8);
-  write(index.data(), index.size());
-  write(footer.data(), footer.size());
-  state_->file.commit();
+  state.write(index.data(), index.size());
+  state.write(footer.data(), footer.size());
+  state.file.commit();
   finished_ = true;
 }
 

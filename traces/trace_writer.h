@@ -1,7 +1,10 @@
 // TraceWriter: an EventSink that writes the trace container (trace_format.h). Give it to the
 // renderer instead of (or beside) a live cache bank; `rastrace replay` reads the file back.
-// Memory is bounded (one chunk per record kind plus 24 bytes of index per chunk), so frames of
-// any length stream to disk. The file appears only when finish() succeeds (core/atomic_file.h);
+// Memory is bounded (one chunk per record kind, up to kChunksInFlight full chunks waiting for the
+// background thread, plus 24 bytes of index per chunk), so frames of any length stream to disk.
+// Chunks are encoded, compressed and written by a thread of the writer's own, in the order they
+// were filled, so compression overlaps rendering and the file's bytes are those a writer without
+// the thread would write. The file appears only when finish() succeeds (core/atomic_file.h);
 // a writer destroyed without finish() leaves nothing behind.
 //
 //   TraceMetadata meta{.scene = "builtin:bunny", .ordering = "tipsy", .width = 512, .height = 512,
@@ -46,20 +49,24 @@ class TraceWriter : public EventSink {
 
   std::uint64_t records(RecordKind kind) const { return counts_[static_cast<int>(kind)]; }
   // Bytes written so far (the file size once finished).
-  std::uint64_t bytes_written() const { return offset_; }
+  std::uint64_t bytes_written() const;
+
+  // Full chunks that may wait for the background thread before a flush waits for it.
+  static constexpr std::size_t kChunksInFlight = 4;
 
  private:
+  struct Chunk;
   void flush_vertices(bool ends_draw);
   void flush_texels();
   void flush_addresses();
   void flush_framebuffer();
-  void write_chunk(RecordKind kind, std::uint8_t flags, std::uint32_t records);
-  void write(const void* data, std::size_t size);
+  // Hands a chunk to the background thread (waiting while kChunksInFlight are queued).
+  void submit(Chunk& chunk, RecordKind kind, std::uint8_t flags, std::uint32_t records);
+  Chunk take_spare();
 
   struct State;
   std::unique_ptr<State> state_;
   TraceWriterOptions options_;
-  std::uint64_t offset_ = 0;
   std::uint64_t counts_[5] = {0, 0, 0, 0, 0};
   bool finished_ = false;
   // Open draw: its info, whether its first chunk has been written.
@@ -70,9 +77,6 @@ class TraceWriter : public EventSink {
   std::vector<TexelAccess> texels_;
   std::vector<AddressAccess> addresses_;
   std::vector<FramebufferAccess> framebuffer_;
-  std::vector<ChunkInfo> index_;
-  std::string raw_;
-  std::string compressed_;
 };
 
 }  // namespace rastrace

@@ -1,0 +1,347 @@
+#include "raster/parallel_rasterizer.h"
+
+#include <algorithm>
+#include <atomic>
+
+namespace rastrace {
+
+// Holds the caller's events as steps of the replay, in the order they were sent.
+class ParallelRasterizer::OrderedSink final : public EventSink {
+ public:
+  explicit OrderedSink(ParallelRasterizer& owner) : owner_(owner) {}
+  void begin_draw(const DrawInfo& draw) override {
+    Batch& batch = *owner_.filling_;
+    batch.steps.push_back({StepKind::BeginDraw, static_cast<std::uint32_t>(batch.draws.size()), 0});
+    batch.draws.push_back(draw);
+  }
+  void vertex_fetches(std::span<const VertexFetch> fetches) override {
+    Batch& batch = *owner_.filling_;
+    const auto first = static_cast<std::uint32_t>(batch.fetches.size());
+    batch.fetches.insert(batch.fetches.end(), fetches.begin(), fetches.end());
+    batch.steps.push_back({StepKind::Fetches, first, static_cast<std::uint32_t>(batch.fetches.size())});
+  }
+  void texel_accesses(std::span<const TexelAccess> accesses) override {
+    owner_.finish();
+    owner_.sink_->texel_accesses(accesses);
+  }
+  void framebuffer_accesses(std::span<const FramebufferAccess> accesses) override {
+    owner_.finish();
+    owner_.sink_->framebuffer_accesses(accesses);
+  }
+  bool wants_framebuffer_events() const override { return owner_.sink_->wants_framebuffer_events(); }
+  void end_draw() override { owner_.filling_->steps.push_back({StepKind::EndDraw, 0, 0}); }
+  void address_accesses(std::span<const AddressAccess> accesses) override {
+    owner_.finish();
+    owner_.sink_->address_accesses(accesses);
+  }
+  void finish() override {
+    owner_.finish();
+    owner_.sink_->finish();
+  }
+
+ private:
+  ParallelRasterizer& owner_;
+};
+
+// A worker's recorders flush into the buffers of the tile it is drawing.
+class ParallelRasterizer::TileSink final : public EventSink {
+ public:
+  explicit TileSink(bool framebuffer_events) : framebuffer_events_(framebuffer_events) {}
+  void texel_accesses(std::span<const TexelAccess> accesses) override {
+    tile->texels.insert(tile->texels.end(), accesses.begin(), accesses.end());
+  }
+  void framebuffer_accesses(std::span<const FramebufferAccess> accesses) override {
+    tile->framebuffer.insert(tile->framebuffer.end(), accesses.begin(), accesses.end());
+  }
+  bool wants_framebuffer_events() const override { return framebuffer_events_; }
+
+  TileEvents* tile = nullptr;
+
+ private:
+  bool framebuffer_events_;
+};
+
+struct ParallelRasterizer::Worker {
+  Worker(EventSink* real_sink)
+      : sink(real_sink && real_sink->wants_framebuffer_events()),
+        texels(real_sink ? &sink : nullptr),
+        framebuffer_events(real_sink ? &sink : nullptr) {}
+  TileSink sink;
+  TexelRecorder texels;
+  FramebufferRecorder framebuffer_events;
+  RasterStats stats;
+};
+
+ParallelRasterizer::ParallelRasterizer(Framebuffer& framebuffer, const RasterOptions& options, EventSink* sink)
+    : framebuffer_(framebuffer),
+      options_(options),
+      sink_(sink),
+      recording_(sink != nullptr),
+      pool_(std::max(1u, options.threads)),
+      tile_columns_((framebuffer.width() + kScreenTile - 1) / kScreenTile),
+      tile_rows_((framebuffer.height() + kScreenTile - 1) / kScreenTile),
+      texels_out_(sink),
+      events_out_(sink) {
+  if (sink_) ordered_ = std::make_unique<OrderedSink>(*this);
+  if (options_.hierarchical_z) {
+    hiz_ = std::make_unique<HierarchicalZ>();
+    hiz_->build(framebuffer_);
+  }
+  for (unsigned w = 0; w < pool_.size(); ++w) workers_.push_back(std::make_unique<Worker>(sink_));
+  const std::size_t tiles = static_cast<std::size_t>(tile_columns_) * static_cast<std::size_t>(tile_rows_);
+  for (Batch& batch : batches_) {
+    batch.bins.resize(tiles);
+    batch.tile_events.resize(tiles);
+    batch.triangles.reserve(kBatchTriangles);
+  }
+  cursors_.resize(tiles);
+  draw_tiles_ = [this](unsigned w) {
+    Batch& batch = *drawing_;
+    for (std::size_t i = next_tile_++; i < batch.busy_tiles.size(); i = next_tile_++)
+      rasterize_tile(*workers_[w], batch, batch.busy_tiles[i]);
+  };
+}
+
+ParallelRasterizer::~ParallelRasterizer() {
+  if (drawing_) pool_.wait();  // an exception left a batch on the workers
+}
+
+EventSink* ParallelRasterizer::event_sink() { return ordered_.get(); }
+
+void ParallelRasterizer::tile_range(const TriangleSetup& s, int& tx0, int& ty0, int& tx1, int& ty1) const {
+  tx0 = s.x0 / kScreenTile;
+  ty0 = s.y0 / kScreenTile;
+  tx1 = s.x1 / kScreenTile;
+  ty1 = s.y1 / kScreenTile;
+}
+
+void ParallelRasterizer::draw(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
+                              const TriangleState& state) {
+  Batch& batch = *filling_;
+  Binned& binned = batch.triangles.emplace_back();
+  if (!setup_triangle(a, b, c, framebuffer_.width(), framebuffer_.height(), traversal_alignment(options_.traversal),
+                      binned.setup)) {
+    batch.triangles.pop_back();
+    return;
+  }
+  ++triangles_;
+  binned.state = state;
+  binned.textured = state.texture != nullptr && !state.texture->levels.empty();
+  const auto index = static_cast<std::uint32_t>(batch.triangles.size() - 1);
+  int tx0, ty0, tx1, ty1;
+  tile_range(binned.setup, tx0, ty0, tx1, ty1);
+  for (int ty = ty0; ty <= ty1; ++ty)
+    for (int tx = tx0; tx <= tx1; ++tx)
+      batch.bins[static_cast<std::size_t>(ty) * static_cast<std::size_t>(tile_columns_) + static_cast<std::size_t>(tx)]
+          .push_back(index);
+  if (recording_) batch.steps.push_back({StepKind::Triangle, index, 0});
+  if (batch.triangles.size() >= kBatchTriangles) run_batch(false);
+}
+
+void ParallelRasterizer::flush() {
+  if (recording_) filling_->steps.push_back({StepKind::Flush, 0, 0});
+}
+
+void ParallelRasterizer::finish() { run_batch(true); }
+
+RasterStats ParallelRasterizer::stats() const {
+  RasterStats total;
+  total.triangles = triangles_;
+  for (const auto& w : workers_) {
+    const RasterStats& s = w->stats;
+    total.quads += s.quads;
+    total.fragments += s.fragments;
+    total.fragments_passed += s.fragments_passed;
+    total.fragments_shaded += s.fragments_shaded;
+    total.fragments_rejected_early += s.fragments_rejected_early;
+    total.quads_rejected_hiz += s.quads_rejected_hiz;
+    total.texel_reads += w->texels.reads();
+  }
+  return total;
+}
+
+void ParallelRasterizer::complete_drawing() {
+  if (!drawing_) return;
+  std::exception_ptr own;
+  try {
+    draw_tiles_(0);
+  } catch (...) {
+    own = std::current_exception();
+  }
+  Batch& batch = *drawing_;
+  pool_.wait();
+  drawing_ = nullptr;  // only now: a worker that starts late still reads it
+  if (own) std::rethrow_exception(own);
+  if (recording_) replay(batch);
+  clear(batch);
+}
+
+void ParallelRasterizer::run_batch(bool wait) {
+  complete_drawing();
+  Batch& batch = *filling_;
+  batch.busy_tiles.clear();
+  for (std::size_t t = 0; t < batch.bins.size(); ++t)
+    if (!batch.bins[t].empty()) batch.busy_tiles.push_back(t);
+  drawing_ = &batch;
+  next_tile_ = 0;
+  filling_ = filling_ == &batches_[0] ? &batches_[1] : &batches_[0];
+  pool_.start(draw_tiles_);
+  if (wait) complete_drawing();
+}
+
+void ParallelRasterizer::clear(Batch& batch) {
+  for (const std::size_t t : batch.busy_tiles) batch.bins[t].clear();
+  batch.busy_tiles.clear();
+  batch.triangles.clear();
+  batch.steps.clear();
+  batch.draws.clear();
+  batch.fetches.clear();
+}
+
+void ParallelRasterizer::rasterize_tile(Worker& worker, Batch& batch, std::size_t tile) {
+  TileEvents& out = batch.tile_events[tile];
+  out.texels.clear();
+  out.framebuffer.clear();
+  out.quads.clear();
+  out.triangle_ends.clear();
+  worker.sink.tile = &out;
+  const int tx = static_cast<int>(tile % static_cast<std::size_t>(tile_columns_));
+  const int ty = static_cast<int>(tile / static_cast<std::size_t>(tile_columns_));
+  const PixelRect clip{tx * kScreenTile, ty * kScreenTile, std::min(framebuffer_.width(), (tx + 1) * kScreenTile) - 1,
+                       std::min(framebuffer_.height(), (ty + 1) * kScreenTile) - 1};
+  const std::uint64_t texel_base = worker.texels.reads();
+  const std::uint64_t event_base = worker.framebuffer_events.records();
+  const bool debug = framebuffer_.has_debug_planes();
+  for (const std::uint32_t index : batch.bins[tile]) {
+    const Binned& triangle = batch.triangles[index];
+    if (triangle.textured) {
+      if (debug)
+        rasterize_in_tile<true, true>(worker, triangle, clip, out, texel_base, event_base);
+      else
+        rasterize_in_tile<true, false>(worker, triangle, clip, out, texel_base, event_base);
+    } else {
+      if (debug)
+        rasterize_in_tile<false, true>(worker, triangle, clip, out, texel_base, event_base);
+      else
+        rasterize_in_tile<false, false>(worker, triangle, clip, out, texel_base, event_base);
+    }
+    if (recording_) out.triangle_ends.push_back(static_cast<std::uint32_t>(out.quads.size()));
+  }
+  worker.texels.flush();
+  worker.framebuffer_events.flush();
+  worker.sink.tile = nullptr;
+}
+
+template <bool kTextured, bool kDebug>
+void ParallelRasterizer::rasterize_in_tile(Worker& worker, const Binned& triangle, const PixelRect& clip,
+                                           TileEvents& out, std::uint64_t texel_base, std::uint64_t event_base) {
+  QuadStage stage{framebuffer_, options_, hiz_.get(), worker.texels, worker.framebuffer_events, worker.stats};
+  const Traversal traversal = options_.traversal;
+  for_each_quad<kDebug>(triangle.setup, traversal, clip, [&](int qx, int qy, const std::int64_t* e) {
+    stage.quad<kTextured, kDebug>(triangle.setup, triangle.state, qx, qy, e);
+    if (!recording_) return;
+    const auto texel_end = static_cast<std::uint32_t>(worker.texels.reads() - texel_base);
+    const auto events_end = static_cast<std::uint32_t>(worker.framebuffer_events.records() - event_base);
+    const QuadMark* last = out.quads.empty() ? nullptr : &out.quads.back();
+    if (last ? (texel_end != last->texel_end || events_end != last->events_end) : (texel_end | events_end) != 0)
+      out.quads.push_back({quad_order_key(traversal, qx, qy), texel_end, events_end});
+  });
+}
+
+void ParallelRasterizer::replay(Batch& batch) {
+  for (const std::size_t t : batch.busy_tiles) cursors_[t] = TileCursor{};
+  for (const Step& step : batch.steps) {
+    switch (step.kind) {
+      case StepKind::BeginDraw:
+        sink_->begin_draw(batch.draws[step.first]);
+        break;
+      case StepKind::Fetches:
+        sink_->vertex_fetches(std::span<const VertexFetch>(batch.fetches.data() + step.first, step.last - step.first));
+        break;
+      case StepKind::Triangle:
+        emit_triangle(batch, step.first);
+        break;
+      case StepKind::Flush:
+        texels_out_.flush();
+        events_out_.flush();
+        break;
+      case StepKind::EndDraw:
+        sink_->end_draw();
+        break;
+    }
+  }
+}
+
+void ParallelRasterizer::emit_quad(const TileEvents& tile, TileCursor& cursor, const QuadMark& mark) {
+  const std::span<const TexelAccess> texels(tile.texels.data() + cursor.texel, mark.texel_end - cursor.texel);
+  const std::span<const FramebufferAccess> events(tile.framebuffer.data() + cursor.event,
+                                                  mark.events_end - cursor.event);
+  cursor.texel = mark.texel_end;
+  cursor.event = mark.events_end;
+  ++cursor.quad;
+  // Early depth test: the depth read comes before the texels; late: after them.
+  if (options_.depth_test == DepthTest::Early && !events.empty()) {
+    events_out_.append(events.first(1));
+    texels_out_.append(texels);
+    events_out_.append(events.subspan(1));
+  } else {
+    texels_out_.append(texels);
+    events_out_.append(events);
+  }
+}
+
+void ParallelRasterizer::emit_triangle(Batch& batch, std::uint32_t triangle) {
+  int tx0, ty0, tx1, ty1;
+  tile_range(batch.triangles[triangle].setup, tx0, ty0, tx1, ty1);
+  // The tiles with quads of this triangle, and where its quads end in each.
+  constexpr int kInline = 16;
+  std::size_t tiles_inline[kInline], ends_inline[kInline];
+  std::vector<std::size_t> tiles_heap, ends_heap;
+  const int count = (tx1 - tx0 + 1) * (ty1 - ty0 + 1);
+  std::size_t* tiles = tiles_inline;
+  std::size_t* ends = ends_inline;
+  if (count > kInline) {
+    tiles_heap.resize(static_cast<std::size_t>(count));
+    ends_heap.resize(static_cast<std::size_t>(count));
+    tiles = tiles_heap.data();
+    ends = ends_heap.data();
+  }
+  int active = 0;
+  for (int ty = ty0; ty <= ty1; ++ty)
+    for (int tx = tx0; tx <= tx1; ++tx) {
+      const std::size_t t =
+          static_cast<std::size_t>(ty) * static_cast<std::size_t>(tile_columns_) + static_cast<std::size_t>(tx);
+      TileCursor& cursor = cursors_[t];
+      const std::size_t end = batch.tile_events[t].triangle_ends[cursor.triangle++];
+      if (end == cursor.quad) continue;
+      tiles[active] = t;
+      ends[active] = end;
+      ++active;
+    }
+  if (active == 1) {
+    const TileEvents& tile = batch.tile_events[tiles[0]];
+    TileCursor& cursor = cursors_[tiles[0]];
+    while (cursor.quad < ends[0]) emit_quad(tile, cursor, tile.quads[cursor.quad]);
+    return;
+  }
+  // Several tiles: merge their quads by their place in the traversal order.
+  for (;;) {
+    int best = -1;
+    std::uint32_t best_key = 0;
+    for (int i = 0; i < active; ++i) {
+      const TileCursor& cursor = cursors_[tiles[i]];
+      if (cursor.quad == ends[i]) continue;
+      const std::uint32_t key = batch.tile_events[tiles[i]].quads[cursor.quad].key;
+      if (best < 0 || key < best_key) {
+        best = i;
+        best_key = key;
+      }
+    }
+    if (best < 0) return;
+    const TileEvents& tile = batch.tile_events[tiles[best]];
+    TileCursor& cursor = cursors_[tiles[best]];
+    emit_quad(tile, cursor, tile.quads[cursor.quad]);
+  }
+}
+
+}  // namespace rastrace

@@ -1,0 +1,127 @@
+// Sort-middle parallel rasterization with the serial renderer's output, to the bit and to the
+// event. Triangles are set up on the calling thread and binned to 32x32-pixel screen tiles; a
+// batch of them is rasterized tile by tile on a WorkerPool, each tile drawing its triangles in
+// draw order (the depth buffer, the colours and hierarchical Z are per pixel or per 8x8 tile, so
+// tiles are independent). Each tile keeps its events in its own buffers with a mark per quad; the
+// calling thread then replays the frame in the serial order: the caller's own events (draws,
+// vertex fetches) where they were sent, and each triangle's quads merged across its tiles by their
+// key in the traversal order (raster/traversal.h), through recorders that batch exactly as the
+// serial rasterizer's do. The sink therefore receives the same calls, with the same batches, at
+// any thread count, and a trace file's bytes do not change.
+//
+// Batches are double-buffered: while the workers draw one, the calling thread sets up and bins
+// the next; when that one is full it joins the workers on what is left of the first, replays it,
+// and hands over the second. Tiles of one batch are drawn only after every tile of the one before.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "raster/framebuffer.h"
+#include "raster/framebuffer_recorder.h"
+#include "raster/quad_stage.h"
+#include "raster/rasterizer.h"
+#include "raster/texel_recorder.h"
+#include "raster/worker_pool.h"
+#include "traces/sink.h"
+
+namespace rastrace {
+
+class ParallelRasterizer {
+ public:
+  static constexpr int kScreenTile = 32;             // pixels; a multiple of 8 (hierarchical Z tiles)
+  static constexpr std::size_t kBatchTriangles = 16384;  // triangles binned before a batch is drawn
+
+  // Draws with options.threads threads (the calling one included).
+  ParallelRasterizer(Framebuffer& framebuffer, const RasterOptions& options, EventSink* sink);
+  ~ParallelRasterizer();
+
+  EventSink* event_sink();
+  void draw(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c, const TriangleState& state);
+  void flush();
+  void finish();
+  RasterStats stats() const;
+
+ private:
+  class OrderedSink;
+  class TileSink;
+  struct Worker;
+  struct Binned {
+    TriangleSetup setup;
+    TriangleState state;
+    bool textured;
+  };
+  struct QuadMark {
+    std::uint32_t key;         // quad_order_key
+    std::uint32_t texel_end;   // end of its texel events in the tile's buffer
+    std::uint32_t events_end;  // end of its framebuffer events
+  };
+  struct TileEvents {
+    std::vector<TexelAccess> texels;
+    std::vector<FramebufferAccess> framebuffer;
+    std::vector<QuadMark> quads;
+    std::vector<std::uint32_t> triangle_ends;  // per binned triangle: its end in quads
+  };
+  // The replay's place in each tile.
+  struct TileCursor {
+    std::size_t triangle = 0, quad = 0, texel = 0, event = 0;
+  };
+  enum class StepKind : std::uint8_t { BeginDraw, Fetches, Triangle, Flush, EndDraw };
+  struct Step {
+    StepKind kind;
+    std::uint32_t first, last;  // Fetches: range in the batch's fetches; Triangle: its index; BeginDraw: in draws
+  };
+
+  void tile_range(const TriangleSetup& s, int& tx0, int& ty0, int& tx1, int& ty1) const;
+  struct Batch;
+  // Starts drawing the filled batch on the workers (after finishing the one before); with
+  // `wait`, draws it to the end.
+  void run_batch(bool wait);
+  // Joins the workers on the batch being drawn, waits for it, replays it.
+  void complete_drawing();
+  void rasterize_tile(Worker& worker, Batch& batch, std::size_t tile);
+  template <bool kTextured, bool kDebug>
+  void rasterize_in_tile(Worker& worker, const Binned& triangle, const PixelRect& clip, TileEvents& out,
+                         std::uint64_t texel_base, std::uint64_t event_base);
+  void replay(Batch& batch);
+  void emit_triangle(Batch& batch, std::uint32_t triangle);
+  void emit_quad(const TileEvents& tile, TileCursor& cursor, const QuadMark& mark);
+  void clear(Batch& batch);
+
+  Framebuffer& framebuffer_;
+  RasterOptions options_;
+  EventSink* sink_;
+  bool recording_;  // a sink is attached: tiles keep their events for the replay
+  std::unique_ptr<OrderedSink> ordered_;
+  std::unique_ptr<HierarchicalZ> hiz_;
+  WorkerPool pool_;
+  std::vector<std::unique_ptr<Worker>> workers_;
+  int tile_columns_, tile_rows_;
+  std::uint64_t triangles_ = 0;
+
+  // A batch of triangles with everything its replay needs.
+  struct Batch {
+    std::vector<Binned> triangles;
+    std::vector<std::vector<std::uint32_t>> bins;  // per tile: indices into triangles, in draw order
+    std::vector<std::size_t> busy_tiles;
+    std::vector<TileEvents> tile_events;
+    std::vector<Step> steps;
+    std::vector<DrawInfo> draws;
+    std::vector<VertexFetch> fetches;
+  };
+  Batch batches_[2];
+  Batch* filling_ = &batches_[0];  // receives triangles and steps
+  Batch* drawing_ = nullptr;       // being drawn by the workers, if any
+  std::atomic<std::size_t> next_tile_{0};
+  std::function<void(unsigned)> draw_tiles_;  // the workers' job: tiles of *drawing_
+  std::vector<TileCursor> cursors_;
+
+  // The replay's recorders: batch the merged events as the serial rasterizer's recorders do.
+  TexelRecorder texels_out_;
+  FramebufferRecorder events_out_;
+};
+
+}  // namespace rastrace

@@ -1,0 +1,97 @@
+// The order in which a triangle's 2x2 quads are visited, as one loop per order, restricted to a
+// clip rectangle so that a tile of the screen can visit its part of a triangle alone. A quad's
+// edge functions are computed from the setup's origin by exact integer steps, so a quad visited
+// from any tile has the same values (and so the same coverage, attributes and texels) as in a
+// visit of the whole triangle.
+//
+// Every order also has a key (quad_order_key): increasing along the order, so that the events of a
+// triangle drawn in several tiles merge back into the order of one whole-triangle visit. A new
+// order adds its enum value, its loop in for_each_quad and its key.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+
+#include "raster/triangle_setup.h"
+
+namespace rastrace {
+
+enum class Traversal : std::uint8_t {
+  Scanline,  // quad rows top to bottom, left to right in each
+  Tiled8,    // 8x8-pixel tiles row-major over the bounding box, quads row-major inside a tile
+};
+// "scanline" or "tiled8" (alias "tiled"); throws InputError otherwise.
+Traversal parse_traversal(const std::string& text);
+const char* to_string(Traversal traversal);
+
+// Pixels x0..x1, y0..y1 inclusive; x0 and y0 multiples of 8 (whole 8x8 tiles and whole quads).
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+};
+
+inline constexpr int kTraversalTile = 8;  // the 8x8 tiles of Tiled8 (and of hierarchical Z)
+
+// How far the bounding box's corner is aligned down (setup_triangle's `align`).
+inline int traversal_alignment(Traversal traversal) { return traversal == Traversal::Tiled8 ? kTraversalTile : 2; }
+
+// Increasing along the traversal order within one triangle; quads of any image up to 16384 pixels.
+inline std::uint32_t quad_order_key(Traversal traversal, int qx, int qy) {
+  const auto x = static_cast<std::uint32_t>(qx), y = static_cast<std::uint32_t>(qy);
+  if (traversal == Traversal::Scanline) return (y >> 1) << 13 | (x >> 1);
+  // Tile row, tile column, quad row in the tile, quad column in the tile.
+  return (y >> 3) << 15 | (x >> 3) << 4 | ((y & 7) >> 1) << 2 | ((x & 7) >> 1);
+}
+
+// Calls visit(qx, qy, e) for every quad of the triangle's box inside `clip`, in the traversal's
+// order; e[k] is edge function k at the quad's top-left pixel centre. Tiled8 skips 8x8 tiles that
+// one edge excludes entirely, unless kVisitAll (the debug planes look at every quad).
+template <bool kVisitAll, typename Visit>
+void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect& clip, Visit&& visit) {
+  const int x_begin = std::max(s.x0, clip.x0), y_begin = std::max(s.y0, clip.y0);
+  const int x_end = std::min(s.x1, clip.x1), y_end = std::min(s.y1, clip.y1);
+  if (x_begin > x_end || y_begin > y_end) return;
+  std::int64_t row[3];
+  for (int k = 0; k < 3; ++k)
+    row[k] = s.origin[k] + s.step_x[k] * (x_begin - s.x0) + s.step_y[k] * (y_begin - s.y0);
+  if (traversal == Traversal::Scanline) {
+    for (int qy = y_begin; qy <= y_end; qy += 2) {
+      std::int64_t e[3] = {row[0], row[1], row[2]};
+      for (int qx = x_begin; qx <= x_end; qx += 2) {
+        visit(qx, qy, static_cast<const std::int64_t*>(e));
+        for (int k = 0; k < 3; ++k) e[k] += 2 * s.step_x[k];
+      }
+      for (int k = 0; k < 3; ++k) row[k] += 2 * s.step_y[k];
+    }
+    return;
+  }
+  // Tiled: skip a tile when one edge function is negative at all its pixel centres; the
+  // maximum of a linear function over the tile is at the corner its gradient points to.
+  constexpr int kTile = kTraversalTile;
+  std::int64_t tile_max[3];
+  for (int k = 0; k < 3; ++k)
+    tile_max[k] =
+        std::max<std::int64_t>(0, s.step_x[k]) * (kTile - 1) + std::max<std::int64_t>(0, s.step_y[k]) * (kTile - 1);
+  for (int ty = y_begin; ty <= y_end; ty += kTile) {
+    std::int64_t tile[3] = {row[0], row[1], row[2]};
+    for (int tx = x_begin; tx <= x_end; tx += kTile) {
+      const bool outside = tile[0] + tile_max[0] + s.bias[0] < 0 || tile[1] + tile_max[1] + s.bias[1] < 0 ||
+                           tile[2] + tile_max[2] + s.bias[2] < 0;
+      if (!outside || kVisitAll) {
+        std::int64_t quad_row[3] = {tile[0], tile[1], tile[2]};
+        for (int qy = ty; qy < ty + kTile && qy <= y_end; qy += 2) {
+          std::int64_t e[3] = {quad_row[0], quad_row[1], quad_row[2]};
+          for (int qx = tx; qx < tx + kTile && qx <= x_end; qx += 2) {
+            visit(qx, qy, static_cast<const std::int64_t*>(e));
+            for (int k = 0; k < 3; ++k) e[k] += 2 * s.step_x[k];
+          }
+          for (int k = 0; k < 3; ++k) quad_row[k] += 2 * s.step_y[k];
+        }
+      }
+      for (int k = 0; k < 3; ++k) tile[k] += kTile * s.step_x[k];
+    }
+    for (int k = 0; k < 3; ++k) row[k] += kTile * s.step_y[k];
+  }
+}
+
+}  // namespace rastrace
