@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "core/error.h"
 #include "experiments/cache_report.h"
 #include "experiments/replay_tables.h"
 
@@ -22,8 +23,18 @@ void add_replay_command(CLI::App& app) {
                    "combination). Byte cache: size=16KiB,line=64B,assoc=4|full,policy=fifo|lru|random|opt,"
                    "layout=linear|block2..block16|morton[,texel=4B][,align=4KiB][,source=texel|vertex|address]"
                    "[,stride=32B][,seed=1]. Depth or colour cache: source=depth|colour with size=... or model=attila"
-                   "[,pixel=4B]. Post-transform vertex cache: entries=16,policy=fifo|lru")
-      ->required();
+                   "[,pixel=4B]. Post-transform vertex cache: entries=16,policy=fifo|lru. Sectored: "
+                   "line=128B,sector=32B");
+  auto hierarchy = std::make_shared<HierarchyRequest>();
+  command->add_option("--level", hierarchy->levels,
+                      "A cache hierarchy, one --level per level, L1 first (each one byte cache spec, sector= "
+                      "allowed; the L1 spec's layout= maps texels to bytes)");
+  command->add_option("--units", hierarchy->units, "Hierarchy: L1 copies (texture units) sharing the lower levels")
+      ->check(CLI::Range(1, 1024));
+  command->add_option("--tile", hierarchy->tile, "Hierarchy: side in pixels of the screen tiles dealt out to units")
+      ->check(CLI::Range(1, 4096));
+  command->add_option("--inclusion", hierarchy->inclusion, "Hierarchy: inclusive or non-inclusive")
+      ->check(CLI::IsMember({"inclusive", "non-inclusive"}));
   command->add_option("--format", *format, "Table format: md, csv, latex or json");
   command->add_option("-o,--output", *output, "Write the table to this file (atomically) instead of stdout");
   command->add_flag("--keep-vertex-cache", *keep_vertex_cache,
@@ -32,10 +43,14 @@ void add_replay_command(CLI::App& app) {
       "Examples:\n"
       "  rastrace replay frame.rtrace --cache size=16KiB,line=64B,assoc=4,policy=lru,layout=block4\n"
       "  rastrace replay frame.rtrace --cache entries=16,policy=fifo --cache size=8KiB,assoc=full,policy=opt\n"
-      "  rastrace replay old.din --cache size=32KiB,line=32B,assoc=2 --format json");
+      "  rastrace replay old.din --cache size=32KiB,line=32B,assoc=2 --format json\n"
+      "  rastrace replay frame.rtrace --level size=16KiB,line=128B,sector=32B,assoc=4,layout=block4 \\\n"
+      "      --level size=1MiB,line=128B,assoc=16 --units 4 --tile 16 --inclusion inclusive");
   command->callback([=] {
+    if (specs->empty() && hierarchy->levels.empty())
+      throw InputError("replay: expected --cache SPEC or --level SPEC (a hierarchy)");
     const TableFormat table_format = parse_table_format(*format);
-    const std::vector<Table> tables = replay_tables(*trace, *specs, *keep_vertex_cache);
+    const std::vector<Table> tables = replay_tables(*trace, *specs, *keep_vertex_cache, "--cache", true, *hierarchy);
     write_output(*output, render_tables(tables, table_format));
   });
 }
