@@ -5,13 +5,15 @@
 #include <cmath>
 
 #include "core/enum_names.h"
+#include "raster/hilbert_order.h"
 
 namespace rastrace {
 
 namespace {
 
 constexpr EnumName<Traversal> kTraversals[] = {
-    {Traversal::Scanline, "scanline"}, {Traversal::Tiled8, "tiled8"}, {Traversal::Tiled8, "tiled"}};
+    {Traversal::Scanline, "scanline"}, {Traversal::Tiled8, "tiled8"}, {Traversal::Tiled8, "tiled"},
+    {Traversal::Hilbert8, "hilbert"}};
 
 }  // namespace
 
@@ -107,7 +109,7 @@ void Rasterizer::draw(const RasterVertex& va, const RasterVertex& vb, const Rast
   max_x = std::min(max_x, framebuffer_.width() - 1);
   max_y = std::min(max_y, framebuffer_.height() - 1);
   if (min_x > max_x || min_y > max_y) return;
-  const int align = options_.traversal == Traversal::Tiled8 ? kTile : 2;
+  const int align = options_.traversal == Traversal::Scanline ? 2 : kTile;
   s.x0 = min_x - min_x % align;
   s.y0 = min_y - min_y % align;
   s.x1 = max_x;
@@ -327,6 +329,32 @@ void Rasterizer::traverse(const Setup& s, const TriangleState& state) {
   for (int k = 0; k < 3; ++k)
     tile_max[k] =
         std::max<std::int64_t>(0, s.step_x[k]) * (kTile - 1) + std::max<std::int64_t>(0, s.step_y[k]) * (kTile - 1);
+  if (options_.traversal == Traversal::Hilbert8) {
+    // The same tiles and quads as tiled8, the tiles visited along the screen's Hilbert curve.
+    const unsigned bits = hilbert_bits(static_cast<std::uint32_t>((framebuffer_.width() + kTile - 1) / kTile),
+                                       static_cast<std::uint32_t>((framebuffer_.height() + kTile - 1) / kTile));
+    hilbert_tiles(static_cast<std::uint32_t>(s.x0 / kTile), static_cast<std::uint32_t>(s.y0 / kTile),
+                  static_cast<std::uint32_t>(s.x1 / kTile), static_cast<std::uint32_t>(s.y1 / kTile), bits,
+                  hilbert_tiles_);
+    for (const std::uint64_t packed : hilbert_tiles_) {
+      const int tx = static_cast<int>(packed & 0xFFFFFFFFu) * kTile, ty = static_cast<int>(packed >> 32) * kTile;
+      std::int64_t tile[3];
+      for (int k = 0; k < 3; ++k) tile[k] = s.origin[k] + (tx - s.x0) * s.step_x[k] + (ty - s.y0) * s.step_y[k];
+      const bool outside = tile[0] + tile_max[0] + s.bias[0] < 0 || tile[1] + tile_max[1] + s.bias[1] < 0 ||
+                           tile[2] + tile_max[2] + s.bias[2] < 0;
+      if (outside && !kDebug) continue;
+      std::int64_t quad_row[3] = {tile[0], tile[1], tile[2]};
+      for (int qy = ty; qy < ty + kTile && qy <= s.y1; qy += 2) {
+        std::int64_t e[3] = {quad_row[0], quad_row[1], quad_row[2]};
+        for (int qx = tx; qx < tx + kTile && qx <= s.x1; qx += 2) {
+          quad(qx, qy, e);
+          for (int k = 0; k < 3; ++k) e[k] += 2 * s.step_x[k];
+        }
+        for (int k = 0; k < 3; ++k) quad_row[k] += 2 * s.step_y[k];
+      }
+    }
+    return;
+  }
   std::copy(s.origin, s.origin + 3, row);
   for (int ty = s.y0; ty <= s.y1; ty += kTile) {
     std::int64_t tile[3] = {row[0], row[1], row[2]};

@@ -38,8 +38,9 @@ namespace rastrace {
 enum class Traversal : std::uint8_t {
   Scanline,  // quad rows top to bottom, left to right in each
   Tiled8,    // 8x8-pixel tiles row-major over the bounding box, quads row-major inside a tile
+  Hilbert8,  // the same tiles in the screen's Hilbert-curve order (hilbert_order.h), quads row-major inside
 };
-// "scanline" or "tiled8" (alias "tiled"); throws InputError otherwise.
+// "scanline", "tiled8" (alias "tiled") or "hilbert"; throws InputError otherwise.
 Traversal parse_traversal(const std::string& text);
 const char* to_string(Traversal traversal);
 
@@ -120,6 +121,7 @@ class Rasterizer {
   RasterStats stats_;
   std::vector<float> hiz_;  // per 8x8 tile, row-major: the farthest depth (hierarchical Z only)
   std::size_t hiz_columns_ = 0;
+  std::vector<std::uint64_t> hilbert_tiles_;  // Hilbert8: this triangle's tiles in curve order
 };
 
 }  // namespace rastrace
