@@ -329,6 +329,18 @@ void Rasterizer::traverse(const Setup& s, const TriangleState& state) {
   for (int k = 0; k < 3; ++k)
     tile_max[k] =
         std::max<std::int64_t>(0, s.step_x[k]) * (kTile - 1) + std::max<std::int64_t>(0, s.step_y[k]) * (kTile - 1);
+  // The quads of one tile, row-major; `tile` holds the edge functions at its top-left pixel.
+  const auto quads_of_tile = [&](int tx, int ty, const std::int64_t* tile) {
+    std::int64_t quad_row[3] = {tile[0], tile[1], tile[2]};
+    for (int qy = ty; qy < ty + kTile && qy <= s.y1; qy += 2) {
+      std::int64_t e[3] = {quad_row[0], quad_row[1], quad_row[2]};
+      for (int qx = tx; qx < tx + kTile && qx <= s.x1; qx += 2) {
+        quad(qx, qy, e);
+        for (int k = 0; k < 3; ++k) e[k] += 2 * s.step_x[k];
+      }
+      for (int k = 0; k < 3; ++k) quad_row[k] += 2 * s.step_y[k];
+    }
+  };
   if (options_.traversal == Traversal::Hilbert8) {
     // The same tiles and quads as tiled8, the tiles visited along the screen's Hilbert curve.
     const unsigned bits = hilbert_bits(static_cast<std::uint32_t>((framebuffer_.width() + kTile - 1) / kTile),
@@ -343,15 +355,7 @@ void Rasterizer::traverse(const Setup& s, const TriangleState& state) {
       const bool outside = tile[0] + tile_max[0] + s.bias[0] < 0 || tile[1] + tile_max[1] + s.bias[1] < 0 ||
                            tile[2] + tile_max[2] + s.bias[2] < 0;
       if (outside && !kDebug) continue;
-      std::int64_t quad_row[3] = {tile[0], tile[1], tile[2]};
-      for (int qy = ty; qy < ty + kTile && qy <= s.y1; qy += 2) {
-        std::int64_t e[3] = {quad_row[0], quad_row[1], quad_row[2]};
-        for (int qx = tx; qx < tx + kTile && qx <= s.x1; qx += 2) {
-          quad(qx, qy, e);
-          for (int k = 0; k < 3; ++k) e[k] += 2 * s.step_x[k];
-        }
-        for (int k = 0; k < 3; ++k) quad_row[k] += 2 * s.step_y[k];
-      }
+      quads_of_tile(tx, ty, tile);
     }
     return;
   }
@@ -361,17 +365,7 @@ void Rasterizer::traverse(const Setup& s, const TriangleState& state) {
     for (int tx = s.x0; tx <= s.x1; tx += kTile) {
       const bool outside = tile[0] + tile_max[0] + s.bias[0] < 0 || tile[1] + tile_max[1] + s.bias[1] < 0 ||
                            tile[2] + tile_max[2] + s.bias[2] < 0;
-      if (!outside || kDebug) {
-        std::int64_t quad_row[3] = {tile[0], tile[1], tile[2]};
-        for (int qy = ty; qy < ty + kTile && qy <= s.y1; qy += 2) {
-          std::int64_t e[3] = {quad_row[0], quad_row[1], quad_row[2]};
-          for (int qx = tx; qx < tx + kTile && qx <= s.x1; qx += 2) {
-            quad(qx, qy, e);
-            for (int k = 0; k < 3; ++k) e[k] += 2 * s.step_x[k];
-          }
-          for (int k = 0; k < 3; ++k) quad_row[k] += 2 * s.step_y[k];
-        }
-      }
+      if (!outside || kDebug) quads_of_tile(tx, ty, tile);
       for (int k = 0; k < 3; ++k) tile[k] += kTile * s.step_x[k];
     }
     for (int k = 0; k < 3; ++k) row[k] += kTile * s.step_y[k];
