@@ -55,6 +55,10 @@ Frame render_frame(const FrameSpec& spec) {
   LiveBankSink bank(frame_bank_config(caches), levels,
                     FrameSize{static_cast<std::uint32_t>(scene.width), static_cast<std::uint32_t>(scene.height)});
   std::vector<EventSink*> sinks = {&bank};
+  std::vector<HierarchySpec> hierarchies;
+  if (!spec.hierarchy.levels.empty()) hierarchies.push_back(parse_hierarchy(spec.hierarchy));
+  HierarchySink hierarchy_sink(hierarchies, levels);
+  if (!hierarchies.empty()) sinks.push_back(&hierarchy_sink);
   std::optional<TraceWriter> writer;
   if (!spec.trace.empty()) {
     TraceMetadata metadata = render_trace_metadata(flags, scene, levels);
@@ -66,7 +70,7 @@ Frame render_frame(const FrameSpec& spec) {
     sinks.push_back(&*writer);
   }
   TeeSink tee(sinks);
-  Frame frame{render_scene(scene, options, &tee), {}};  // render_scene calls finish() on every sink
+  Frame frame{render_scene(scene, options, &tee), {}, {}};  // render_scene calls finish() on every sink
 
   const PipelineStats& p = frame.result.pipeline;
   const RasterStats& r = frame.result.raster;
@@ -121,6 +125,9 @@ Frame render_frame(const FrameSpec& spec) {
   row.emplace_back(r.fragments_shaded ? double(t.bytes_fetched) / double(r.fragments_shaded) : 0.0);
   for (TableCell& cell : frame_traffic_cells(traffic)) row.push_back(std::move(cell));
   table.add_row(std::move(row));
+  if (!hierarchies.empty())
+    frame.hierarchy.push_back(hierarchy_table({{"scene", flags.scene}, {"raster", flags.raster}, {"order", flags.order}},
+                                              hierarchies.front(), hierarchy_sink.hierarchy(0)));
   return frame;
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/table.h"
+#include "experiments/hierarchy_tables.h"
 #include "experiments/render_settings.h"
 #include "pipeline/render_scene.h"
 
@@ -24,11 +25,13 @@ struct FrameSpec {
   std::string vipm;   // a VIPM method: draw the LoD `lod` instead of an ordering
   std::string lod;    // collapses done, with vipm
   std::string image;  // where the caller writes the image: stated in the table only
+  HierarchyRequest hierarchy;  // render --level ...: a texture cache hierarchy simulated live
 };
 
 struct Frame {
   RenderResult result;
   Table table;  // one row; title "Frame: <scene>"
+  std::vector<Table> hierarchy;  // with spec.hierarchy: its "Cache hierarchy" table
 };
 
 // Throws InputError for a bad scene, cache spec, ordering or VIPM setting.

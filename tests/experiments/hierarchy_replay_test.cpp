@@ -50,7 +50,7 @@ TEST(HierarchyReplay, OneSectorPerLineAndAOneLineL1EqualThePlainCacheOnTheBunny)
 TEST(HierarchyReplay, UnitsSplitTheL1AccessesAndBadLevelsAreNamed) {
   const testing::TempDir dir;
   const std::string trace = dir.file("grid.rtrace");
-  ASSERT_EQ(testing::run_rastrace({"render", "builtin:grid", "--size", "256x256", "-o", dir.file("grid.png"), "--trace",
+  ASSERT_EQ(testing::run_rastrace({"render", "builtin:grid", "--size", "128x128", "-o", dir.file("grid.png"), "--trace",
                                    trace})
                 .exit_code,
             0);
@@ -76,6 +76,29 @@ TEST(HierarchyReplay, UnitsSplitTheL1AccessesAndBadLevelsAreNamed) {
   const testing::CommandRun none = testing::run_rastrace({"replay", trace});
   EXPECT_NE(none.exit_code, 0);
   EXPECT_NE(none.err.find("expected --cache SPEC or --level SPEC"), std::string::npos) << none.err;
+}
+
+TEST(HierarchyReplay, RenderSimulatesTheHierarchyLiveAsReplayDoesFromItsTrace) {
+  const testing::TempDir dir;
+  const std::string trace = dir.file("bunny.rtrace");
+  const std::vector<std::string> hierarchy = {"--level",   "size=8KiB,line=128B,sector=32B,assoc=4,layout=block4",
+                                              "--level",   "size=64KiB,line=128B,assoc=8",
+                                              "--units",   "2",
+                                              "--inclusion", "inclusive",
+                                              "--format",  "json"};
+  std::vector<std::string> render = {"render", "builtin:bunny", "--size", "192x192", "-o", dir.file("b.png"),
+                                     "--trace", trace};
+  render.insert(render.end(), hierarchy.begin(), hierarchy.end());
+  const nlohmann::json live = replay_json(render);
+  std::vector<std::string> replay = {"replay", trace};
+  replay.insert(replay.end(), hierarchy.begin(), hierarchy.end());
+  const nlohmann::json replayed = replay_json(replay);
+  ASSERT_EQ(live.size(), 3u);  // the frame's row, then L1 and L2
+  ASSERT_EQ(replayed.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k)
+    for (const char* key : {"accesses", "misses", "line_misses", "bytes_requested", "bytes_fetched", "invalidations"})
+      EXPECT_EQ(live[k + 1].at(key), replayed[k].at(key)) << "level " << k + 1 << " " << key;
+  EXPECT_EQ(live[1].at("accesses"), live[0].at("texel_accesses"));
 }
 
 }  // namespace
