@@ -33,6 +33,7 @@ struct RenderCommand {
   std::string format = "md";
   bool json = false;
   HierarchyRequest hierarchy;  // --level, --units, --tile, --inclusion
+  unsigned frames = 1;
 };
 
 void run_render(const RenderCommand& command) {
@@ -51,6 +52,7 @@ void run_render(const RenderCommand& command) {
   spec.lod = command.lod;
   spec.image = command.output;
   spec.hierarchy = command.hierarchy;
+  spec.frames = command.frames;
   const Frame frame = render_frame(spec);
   frame.result.framebuffer.write_colour(command.output);
   if (!command.depth.empty()) frame.result.framebuffer.write_depth(command.depth);
@@ -93,6 +95,10 @@ void add_render_command(CLI::App& app) {
       ->check(CLI::Range(1, 4096));
   command->add_option("--inclusion", options->hierarchy.inclusion, "Hierarchy: inclusive or non-inclusive")
       ->check(CLI::IsMember({"inclusive", "non-inclusive"}));
+  command->add_option("--frames", options->frames,
+                      "Draw the frame N times from the scene's camera through the --level hierarchy, which keeps "
+                      "its contents: misses per frame")
+      ->check(CLI::Range(1u, 10000u));
   command->add_option("--format", options->format, "md, csv, latex or json")->capture_default_str();
   command->add_flag("--json", options->json, "Same as --format json");
   command->footer(

@@ -15,7 +15,43 @@
 
 namespace rastrace {
 
+namespace {
+
+// Frames 2..N drawn into the hierarchy that drew frame 1; one row per frame and level with that
+// frame's share of the counts.
+Table repeated_frames_table(const FrameSpec& spec, const Scene& scene, const RenderOptions& options,
+                            HierarchySink& sink) {
+  std::vector<std::vector<LevelStats>> after = {sink.hierarchy(0).stats()};
+  for (unsigned f = 1; f < spec.frames; ++f) {
+    render_scene(scene, options, &sink);
+    after.push_back(sink.hierarchy(0).stats());
+  }
+  Table t;
+  t.title = "Cache hierarchy per frame";
+  t.parameters = {{"scene", spec.flags.scene},
+                  {"frames", spec.frames},
+                  {"camera", "static (the scene's)"},
+                  {"hierarchy", describe(sink.hierarchy(0).config())}};
+  t.columns = {{"frame", "frame", 0},       {"level", "level", 0},
+               {"accesses", "accesses", 0}, {"misses", "misses", 0},
+               {"line_misses", "line misses", 0}, {"bytes_fetched", "bytes from next level", 0}};
+  for (std::size_t f = 0; f < after.size(); ++f)
+    for (std::size_t k = 0; k < after[f].size(); ++k) {
+      const LevelStats& now = after[f][k];
+      const LevelStats before = f ? after[f - 1][k] : LevelStats{};
+      t.add_row({f + 1, "L" + std::to_string(k + 1), now.accesses - before.accesses, now.misses - before.misses,
+                 now.line_misses - before.line_misses, now.bytes_fetched - before.bytes_fetched});
+    }
+  return t;
+}
+
+}  // namespace
+
 Frame render_frame(const FrameSpec& spec) {
+  if (spec.frames == 0) throw InputError("--frames 0: expected at least one frame");
+  if (spec.frames > 1 && spec.hierarchy.levels.empty())
+    throw InputError("--frames " + std::to_string(spec.frames) +
+                     ": repeated frames are simulated through a cache hierarchy: add --level SPEC (one or more)");
   const SceneRenderFlags& flags = spec.flags;
   RenderOptions options = render_options_from(flags);
   const VertexCacheSpec vcache = parse_vertex_cache(spec.vcache, "--vcache");
@@ -128,6 +164,7 @@ Frame render_frame(const FrameSpec& spec) {
   if (!hierarchies.empty())
     frame.hierarchy.push_back(hierarchy_table({{"scene", flags.scene}, {"raster", flags.raster}, {"order", flags.order}},
                                               hierarchies.front(), hierarchy_sink.hierarchy(0)));
+  if (spec.frames > 1) frame.hierarchy.push_back(repeated_frames_table(spec, scene, options, hierarchy_sink));
   return frame;
 }
 

@@ -101,5 +101,32 @@ TEST(HierarchyReplay, RenderSimulatesTheHierarchyLiveAsReplayDoesFromItsTrace) {
   EXPECT_EQ(live[1].at("accesses"), live[0].at("texel_accesses"));
 }
 
+TEST(HierarchyReplay, AStaticCameraMissesInTheL2OnlyInTheFirstFrameWhenTheL2HoldsTheFrame) {
+  const testing::TempDir dir;
+  const std::string trace = dir.file("bunny.rtrace");
+  const nlohmann::json rows = replay_json(
+      {"render", "builtin:bunny", "--size", "192x192", "-o", dir.file("b.png"), "--trace", trace, "--level",
+       "size=8KiB,line=128B,assoc=4,layout=block4", "--level", "size=4MiB,line=128B,assoc=16", "--frames", "3",
+       "--format", "json"});
+  ASSERT_EQ(rows.size(), 1u + 2u + 6u);  // the frame, the hierarchy (2 levels), 3 frames x 2 levels
+  // The compulsory misses of the first frame: its distinct 128-byte lines.
+  const nlohmann::json cold = replay_json(
+      {"replay", trace, "--cache", "size=4MiB,line=128B,assoc=full,layout=block4", "--format", "json"});
+  const std::uint64_t compulsory = cold[0].at("compulsory");
+  EXPECT_GT(compulsory, 100u);
+  for (std::size_t f = 0; f < 3; ++f) {
+    const nlohmann::json& l1 = rows[3 + 2 * f];
+    const nlohmann::json& l2 = rows[4 + 2 * f];
+    EXPECT_EQ(l1.at("frame"), f + 1);
+    EXPECT_EQ(l2.at("level"), "L2");
+    EXPECT_EQ(l2.at("accesses"), l1.at("misses"));
+    EXPECT_EQ(l2.at("misses").get<std::uint64_t>(), f == 0 ? compulsory : 0u) << "frame " << f + 1;
+  }
+  const testing::CommandRun no_hierarchy =
+      testing::run_rastrace({"render", "builtin:bunny", "-o", dir.file("c.png"), "--frames", "2"});
+  EXPECT_NE(no_hierarchy.exit_code, 0);
+  EXPECT_NE(no_hierarchy.err.find("add --level SPEC"), std::string::npos) << no_hierarchy.err;
+}
+
 }  // namespace
 }  // namespace rastrace
