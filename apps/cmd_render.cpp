@@ -32,6 +32,8 @@ struct RenderCommand {
   std::string lod;         // collapses done, with --vipm
   std::string format = "md";
   bool json = false;
+  HierarchyRequest hierarchy;  // --level, --units, --tile, --inclusion
+  unsigned frames = 1;
 };
 
 void run_render(const RenderCommand& command) {
@@ -49,10 +51,14 @@ void run_render(const RenderCommand& command) {
   spec.vipm = command.vipm;
   spec.lod = command.lod;
   spec.image = command.output;
+  spec.hierarchy = command.hierarchy;
+  spec.frames = command.frames;
   const Frame frame = render_frame(spec);
   frame.result.framebuffer.write_colour(command.output);
   if (!command.depth.empty()) frame.result.framebuffer.write_depth(command.depth);
-  std::cout << render_table(frame.table, format);
+  std::vector<Table> tables = {frame.table};
+  tables.insert(tables.end(), frame.hierarchy.begin(), frame.hierarchy.end());
+  std::cout << render_tables(tables, format);
 }
 
 }  // namespace
@@ -81,6 +87,18 @@ void add_render_command(CLI::App& app) {
   command->add_option("--vipm", options->vipm,
                       "Draw a VIPM level of detail: vanilla, skipstrips, skiplists, mixed, mixedstrips or sliding");
   command->add_option("--lod", options->lod, "With --vipm: the level of detail, as collapses done (0: full detail)");
+  command->add_option("--level", options->hierarchy.levels,
+                      "A texture cache hierarchy simulated live, one --level per level, L1 first (replay --help)");
+  command->add_option("--units", options->hierarchy.units, "Hierarchy: L1 copies (texture units)")
+      ->check(CLI::Range(1, 1024));
+  command->add_option("--tile", options->hierarchy.tile, "Hierarchy: screen tile side in pixels dealt out to units")
+      ->check(CLI::Range(1, 4096));
+  command->add_option("--inclusion", options->hierarchy.inclusion, "Hierarchy: inclusive or non-inclusive")
+      ->check(CLI::IsMember({"inclusive", "non-inclusive"}));
+  command->add_option("--frames", options->frames,
+                      "Draw the frame N times from the scene's camera through the --level hierarchy, which keeps "
+                      "its contents: misses per frame")
+      ->check(CLI::Range(1u, 10000u));
   command->add_option("--format", options->format, "md, csv, latex or json")->capture_default_str();
   command->add_flag("--json", options->json, "Same as --format json");
   command->footer(

@@ -1,10 +1,14 @@
 // `rastrace replay TRACE --cache SPEC...`: replays a trace (rastrace container, CSV export or
 // Dinero din) through the given caches in one pass, with the LiveBankSink that live rendering uses.
+#include <iostream>
 #include <memory>
 
 #include "apps/commands.h"
+#include "cache_sim/cache_spec.h"
+#include "core/error.h"
 #include "experiments/cache_report.h"
 #include "experiments/replay_tables.h"
+#include "experiments/texture_miss_map.h"
 
 namespace rastrace {
 
@@ -22,21 +26,55 @@ void add_replay_command(CLI::App& app) {
                    "combination). Byte cache: size=16KiB,line=64B,assoc=4|full,policy=fifo|lru|random|opt,"
                    "layout=linear|block2..block16|morton[,texel=4B][,align=4KiB][,source=texel|vertex|address]"
                    "[,stride=32B][,seed=1]. Depth or colour cache: source=depth|colour with size=... or model=attila"
-                   "[,pixel=4B]. Post-transform vertex cache: entries=16,policy=fifo|lru")
-      ->required();
+                   "[,pixel=4B]. Post-transform vertex cache: entries=16,policy=fifo|lru. Sectored: "
+                   "line=128B,sector=32B");
+  auto hierarchy = std::make_shared<HierarchyRequest>();
+  command->add_option("--level", hierarchy->levels,
+                      "A cache hierarchy, one --level per level, L1 first (each one byte cache spec, sector= "
+                      "allowed; the L1 spec's layout= maps texels to bytes)");
+  command->add_option("--units", hierarchy->units, "Hierarchy: L1 copies (texture units) sharing the lower levels")
+      ->check(CLI::Range(1, 1024));
+  command->add_option("--tile", hierarchy->tile, "Hierarchy: side in pixels of the screen tiles dealt out to units")
+      ->check(CLI::Range(1, 4096));
+  command->add_option("--inclusion", hierarchy->inclusion, "Hierarchy: inclusive or non-inclusive")
+      ->check(CLI::IsMember({"inclusive", "non-inclusive"}));
   command->add_option("--format", *format, "Table format: md, csv, latex or json");
   command->add_option("-o,--output", *output, "Write the table to this file (atomically) instead of stdout");
+  auto miss_map = std::make_shared<std::string>();
+  command->add_option("--miss-map", *miss_map,
+                      "Draw per pixel the texture misses of the first texture --cache (0, 1, 2, 3+; legend and cache "
+                      "in FILE.txt beside it)");
   command->add_flag("--keep-vertex-cache", *keep_vertex_cache,
                     "Keep the post-transform cache across draws (default: empty at each draw)");
   command->footer(
       "Examples:\n"
       "  rastrace replay frame.rtrace --cache size=16KiB,line=64B,assoc=4,policy=lru,layout=block4\n"
       "  rastrace replay frame.rtrace --cache entries=16,policy=fifo --cache size=8KiB,assoc=full,policy=opt\n"
-      "  rastrace replay old.din --cache size=32KiB,line=32B,assoc=2 --format json");
+      "  rastrace replay old.din --cache size=32KiB,line=32B,assoc=2 --format json\n"
+      "  rastrace replay frame.rtrace --level size=16KiB,line=128B,sector=32B,assoc=4,layout=block4 \\\n"
+      "      --level size=1MiB,line=128B,assoc=16 --units 4 --tile 16 --inclusion inclusive\n"
+      "  rastrace replay frame.rtrace --cache size=32KiB,line=128B,assoc=2,layout=block4 --miss-map misses.png");
   command->callback([=] {
+    if (specs->empty() && hierarchy->levels.empty())
+      throw InputError("replay: expected --cache SPEC or --level SPEC (a hierarchy)");
     const TableFormat table_format = parse_table_format(*format);
-    const std::vector<Table> tables = replay_tables(*trace, *specs, *keep_vertex_cache);
+    const std::vector<Table> tables = replay_tables(*trace, *specs, *keep_vertex_cache, "--cache", true, *hierarchy);
     write_output(*output, render_tables(tables, table_format));
+    if (!miss_map->empty()) {
+      // The first texture cache the specs name (the table above has its totals).
+      for (const std::string& text : *specs) {
+        const CacheSpec spec = parse_cache_spec(text, "--cache");
+        if (spec.kind != CacheKind::Byte || spec.buffer || spec.source.value_or(SweepSource::Texel) != SweepSource::Texel)
+          continue;
+        const ByteCacheChoice choice = byte_caches(spec).front();
+        if (choice.sector_bytes != 0 || choice.cache.policy == ReplacementPolicy::Opt) continue;
+        const TextureMissMap map = texture_miss_map(*trace, choice.cache, choice.layout);
+        std::cerr << write_texture_miss_map(
+            map, format_cache_spec(choice.cache) + ",layout=" + layout_name(choice.layout), *miss_map);
+        return;
+      }
+      throw InputError("--miss-map: expected a texture --cache (fifo, lru or random, unsectored) to charge misses to");
+    }
   });
 }
 

@@ -29,7 +29,7 @@ void add_reproduce_command(CLI::App& app) {
       app.add_subcommand("reproduce", "Published figures of the papers beside rastrace's own, with the difference");
   auto command = std::make_shared<ReproduceCommand>();
   sub->add_option("--paper", command->options.papers,
-                  "all, or a comma-separated list of castano, hoppe, yang, yang-texture, sander, forsyth")
+                  "all, or a comma-separated list of castano, hoppe, yang, yang-texture, sander, forsyth, hakura")
       ->capture_default_str();
   sub->add_option("--local-iterations", command->options.local_iterations,
                   "Perturbation searches of Hoppe's local optimization")

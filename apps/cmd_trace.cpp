@@ -6,9 +6,11 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "cache_sim/trace_export.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/table.h"
+#include "core/units.h"
 #include "traces/replay_file.h"
 #include "traces/text_formats.h"
 #include "traces/trace_writer.h"
@@ -74,14 +76,50 @@ void add_trace_command(CLI::App& app) {
   auto in = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   convert->add_option("input", *in, "Trace file: .rtrace, .csv or .din")->required();
-  convert->add_option("output", *out, "Output: .rtrace or .csv (by extension)")->required();
+  convert->add_option("output", *out,
+                      "Output: .rtrace, .csv, .din (extended din: byte addresses) or .oracleGeneral[.bin] "
+                      "(libCacheSim binary), by extension")
+      ->required();
+  // Byte-address exports (cache_sim/trace_export.h).
+  auto layout = std::make_shared<std::string>("linear");
+  auto texel = std::make_shared<std::string>("4B");
+  auto stride = std::make_shared<std::string>("32B");
+  auto block = std::make_shared<std::string>("64B");
+  auto vertices = std::make_shared<bool>(false);
+  convert->add_option("--layout", *layout, "din/libCacheSim: texture layout (linear, block2..block16, morton)");
+  convert->add_option("--texel", *texel, "din/libCacheSim: bytes per texel");
+  convert->add_flag("--vertices", *vertices, "din/libCacheSim: export the vertex fetches instead of the texels");
+  convert->add_option("--stride", *stride, "din/libCacheSim with --vertices: bytes per vertex");
+  convert->add_option("--block", *block, "libCacheSim: bytes per object (the cache block)");
   convert->footer(
       "Examples:\n"
       "  rastrace trace convert frame.rtrace frame.csv\n"
       "  rastrace trace convert frame.csv frame.rtrace\n"
-      "  rastrace trace convert gcc.din gcc.rtrace");
+      "  rastrace trace convert gcc.din gcc.rtrace\n"
+      "  rastrace trace convert frame.rtrace frame.din --layout block4\n"
+      "  rastrace trace convert frame.rtrace frame.oracleGeneral.bin --layout block4 --block 64B");
   convert->callback([=] {
     const std::string extension = std::filesystem::path(*out).extension().string();
+    const std::string name = std::filesystem::path(*out).filename().string();
+    const bool libcachesim = name.ends_with(".oracleGeneral") || name.ends_with(".oracleGeneral.bin");
+    if (extension == ".din" || libcachesim) {
+      AddressExportSpec spec;
+      spec.vertices = *vertices;
+      spec.layout = parse_layout(*layout);
+      spec.layout.texel_bytes = static_cast<std::uint32_t>(parse_byte_size(*texel, "--texel"));
+      spec.stride = static_cast<std::uint32_t>(parse_byte_size(*stride, "--stride"));
+      const std::vector<std::uint64_t> addresses = trace_addresses(*in, spec);
+      if (libcachesim) {
+        const std::uint64_t block_bytes = parse_byte_size(*block, "--block");
+        write_file_atomically(
+            *out, [&](std::ostream& o) { write_libcachesim(addresses, static_cast<std::uint32_t>(block_bytes), o); });
+      } else {
+        write_file_atomically(*out, [&](std::ostream& o) { write_extended_din(addresses, access_bytes(spec), o); },
+                              false);
+      }
+      std::cout << "wrote " << *out << " (" << addresses.size() << " accesses)\n";
+      return;
+    }
     const TraceSummary summary = summarize_trace(*in);
     if (extension == ".csv") {
       if (summary.format == TraceFileFormat::Container) {
@@ -104,7 +142,8 @@ void add_trace_command(CLI::App& app) {
       TraceWriter writer(*out, summary.metadata);
       replay_file(*in, writer);
     } else {
-      throw InputError("trace convert: output '" + *out + "': expected a .rtrace or .csv file name");
+      throw InputError("trace convert: output '" + *out +
+                       "': expected a .rtrace, .csv, .din or .oracleGeneral[.bin] file name");
     }
     std::cout << "wrote " << *out << "\n";
   });

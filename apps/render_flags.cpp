@@ -13,7 +13,7 @@ void add_scene_render_flags(CLI::App& command, SceneRenderFlags& flags) {
       .add_option("--filter", flags.filter, "nearest, linear, nearest_mipmap_nearest, linear_mipmap_nearest, trilinear")
       ->capture_default_str();
   command.add_option("--wrap", flags.wrap, "repeat or clamp_to_edge")->capture_default_str();
-  command.add_option("--raster", flags.raster, "Traversal inside a triangle: scanline or tiled8")
+  command.add_option("--raster", flags.raster, "Traversal inside a triangle: scanline, tiled8 or hilbert (8x8 tiles along the screen Hilbert curve)")
       ->capture_default_str();
   command.add_option("--cull", flags.cull, "Face culling: none, back or front")->capture_default_str();
   command.add_flag("--lighting", flags.lighting, "Gouraud lighting with one directional light");

@@ -209,6 +209,14 @@ void set_stride(CacheSpec& s, const std::vector<std::string>& values, const Cont
   s.stride = at_most_32_bits(one_size(values, c, "stride"), c, "stride", 1u << 20);
 }
 
+void set_sector(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  s.sectors.clear();
+  for (const std::uint64_t b : numbers(values, c, "sector", true)) {
+    if (b == 0) bad_value(c, "sector", "0", "a power-of-two byte size no larger than the line, e.g. sector=32B");
+    push_unique(s.sectors, at_most_32_bits(b, c, "sector", 1u << 30));
+  }
+}
+
 // Vertex keys first, then byte keys, in the order the help lists them.
 constexpr KeyRule kKeys[] = {
     {"entries", kVertexKey, true, "1..1048576, e.g. entries=16 or entries=4..64", set_entries, nullptr},
@@ -224,6 +232,8 @@ constexpr KeyRule kKeys[] = {
      set_primgroup, nullptr},
     {"size", kByteKey, true, "a byte size, e.g. size=16KiB or size=1KiB..64KiB", nullptr, set_size},
     {"line", kByteKey, true, "a byte size, e.g. line=64B or line=32B/64B", nullptr, set_line},
+    {"sector", kByteKey, true, "sector bytes of a sectored line, e.g. line=128B,sector=32B (default: the line)",
+     nullptr, set_sector},
     {"assoc", kByteKey, true, "ways or full, e.g. assoc=4 or assoc=1/2/4/full", nullptr, set_assoc},
     {"policy", kBothKinds, true, "fifo|lru (vertex cache), fifo|lru|random|opt (byte cache)", set_vertex_policy,
      set_byte_policy},
@@ -303,7 +313,7 @@ std::string old_spelling(const std::string& text) {
 std::size_t CacheSpec::combinations() const {
   if (kind == CacheKind::Vertex)
     return models.empty() ? vertex_policies.size() * entries.size() * warps.size() * primgroups.size() : models.size();
-  return layouts.size() * policies.size() * lines.size() * assocs.size() * sizes.size();
+  return layouts.size() * policies.size() * lines.size() * sectors.size() * assocs.size() * sizes.size();
 }
 
 CacheSpec parse_cache_spec(const std::string& text, const std::string& option) {
@@ -380,6 +390,9 @@ CacheSpec parse_cache_spec(const std::string& text, const std::string& option) {
     throw InputError(c.where("missing size=...: a byte cache needs its capacity, e.g. size=16KiB"));
   for (const Item& item : items) {
     const std::string name = item.key->name;
+    if (name == "sector" && spec.buffer)
+      throw InputError(c.where("sector= does not apply to a " + std::string(to_string(*spec.buffer)) +
+                               " cache (a write-back cache of whole lines)"));
     if (name == "pixel" && !spec.buffer)
       throw InputError(c.where("pixel= is the bytes per pixel of a depth or colour cache: add source=depth or "
                                "source=colour (a texture cache's element is texel=)"));
@@ -412,9 +425,11 @@ std::vector<ByteCacheChoice> byte_caches(const CacheSpec& spec) {
   for (const LayoutSpec& layout : spec.layouts)
     for (const ReplacementPolicy policy : spec.policies)
       for (const std::uint32_t line : spec.lines)
+        for (const std::uint32_t sector : spec.sectors)
         for (const std::uint32_t assoc : spec.assocs)
           for (const std::uint64_t size : spec.sizes) {
             ByteCacheChoice choice;
+            choice.sector_bytes = sector;
             choice.cache.size_bytes = size;
             choice.cache.line_bytes = line;
             choice.cache.assoc = assoc;
@@ -446,6 +461,9 @@ VertexCacheSpec parse_vertex_cache(const std::string& text, const std::string& o
 
 ByteCacheChoice parse_byte_cache(const std::string& text, const std::string& option) {
   const ByteCacheChoice choice = byte_caches(parse_one(text, option, CacheKind::Byte)).front();
+  if (choice.sector_bytes != 0)
+    throw InputError(option + " '" + text + "': sector= is for replay and hierarchies (rastrace replay --cache, "
+                     "--level); " + option + " simulates whole lines");
   try {
     validate(choice.cache);
   } catch (const InputError& e) {
@@ -455,6 +473,8 @@ ByteCacheChoice parse_byte_cache(const std::string& text, const std::string& opt
 }
 
 SweepSpec sweep_spec(const CacheSpec& spec, SweepSource fallback) {
+  if (spec.sectors.size() != 1 || spec.sectors.front() != 0)
+    throw InputError("sector=: sectored caches are replayed (rastrace replay --cache ...,sector=32B), not swept");
   if (spec.buffer)
     throw InputError(std::string("source=") + to_string(*spec.buffer) +
                      ": depth and colour caches are replayed (rastrace replay --cache ...,source=" +

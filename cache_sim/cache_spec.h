@@ -18,7 +18,9 @@
 //                                   policy=fifo|lru|random|opt (lru),
 //                                   layout=linear|block2|block4|block8|block16|morton (linear),
 //                                   texel=SIZE (4B), align=SIZE (4KiB), seed=N (1),
-//                                   source=texel|vertex|address (what the trace holds), stride=SIZE (32B)
+//                                   source=texel|vertex|address (what the trace holds), stride=SIZE (32B),
+//                                   sector=SIZE (the line: unsectored), e.g. line=128B,sector=32B for
+//                                   four 32-byte sectors (sectored_cache.h; replay and hierarchies only)
 //   depth or colour cache           a byte cache with source=depth|colour: its elements are pixels
 //                                   (pixel=SIZE, 4B), its layout lays out the frame; write-back
 //                                   (write_back_cache.h), so policy=opt is refused
@@ -27,8 +29,8 @@
 //                                   keys given beside it override it
 // size, line, assoc, policy, layout and entries take alternatives; a spec with alternatives
 // stands for the cross product. Expansion order (the last key varies fastest), which is the
-// row order of the sweep tables: byte caches layout, policy, line, assoc, size; vertex caches
-// policy, entries, warp, primgroup (presets in the order given).
+// row order of the sweep tables: byte caches layout, policy, line, sector, assoc, size; vertex
+// caches policy, entries, warp, primgroup (presets in the order given).
 //
 // Errors are InputErrors that name the option and the spec, and list the accepted keys or values.
 // A spec in one of the spellings used before this grammar (`16KiB,64B,4way,lru`, `fifo:16`,
@@ -71,6 +73,7 @@ struct CacheSpec {
   std::optional<SweepSource> source;  // unset: what the trace holds
   std::optional<FramebufferBuffer> buffer;  // source=depth|colour: a framebuffer cache
   std::uint32_t stride = 32;
+  std::vector<std::uint32_t> sectors{0};  // sector bytes, 0 = the whole line
 
   // How many caches the spec stands for.
   std::size_t combinations() const;
@@ -85,10 +88,12 @@ std::vector<VertexCacheSpec> vertex_caches(const CacheSpec& spec);
 struct ByteCacheChoice {
   CacheConfig cache;
   LayoutSpec layout;
+  std::uint32_t sector_bytes = 0;  // 0 = unsectored
 };
 std::vector<ByteCacheChoice> byte_caches(const CacheSpec& spec);
 // Exactly one cache of one kind (render's --vcache and --tcache, adjacency's --cache): the other
-// kind or alternatives are InputErrors; the byte cache's geometry is validated.
+// kind or alternatives are InputErrors; the byte cache's geometry is validated; sector= is refused
+// (these caches are whole-line caches).
 VertexCacheSpec parse_vertex_cache(const std::string& text, const std::string& option);
 ByteCacheChoice parse_byte_cache(const std::string& text, const std::string& option);
 // Depth or colour caches: the cross product of a spec with source=depth|colour (empty otherwise).

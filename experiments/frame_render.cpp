@@ -16,7 +16,43 @@
 
 namespace rastrace {
 
+namespace {
+
+// Frames 2..N drawn into the hierarchy that drew frame 1; one row per frame and level with that
+// frame's share of the counts.
+Table repeated_frames_table(const FrameSpec& spec, const Scene& scene, const RenderOptions& options,
+                            HierarchySink& sink) {
+  std::vector<std::vector<LevelStats>> after = {sink.hierarchy(0).stats()};
+  for (unsigned f = 1; f < spec.frames; ++f) {
+    render_scene(scene, options, &sink);
+    after.push_back(sink.hierarchy(0).stats());
+  }
+  Table t;
+  t.title = "Cache hierarchy per frame";
+  t.parameters = {{"scene", spec.flags.scene},
+                  {"frames", spec.frames},
+                  {"camera", "static (the scene's)"},
+                  {"hierarchy", describe(sink.hierarchy(0).config())}};
+  t.columns = {{"frame", "frame", 0},       {"level", "level", 0},
+               {"accesses", "accesses", 0}, {"misses", "misses", 0},
+               {"line_misses", "line misses", 0}, {"bytes_fetched", "bytes from next level", 0}};
+  for (std::size_t f = 0; f < after.size(); ++f)
+    for (std::size_t k = 0; k < after[f].size(); ++k) {
+      const LevelStats& now = after[f][k];
+      const LevelStats before = f ? after[f - 1][k] : LevelStats{};
+      t.add_row({f + 1, "L" + std::to_string(k + 1), now.accesses - before.accesses, now.misses - before.misses,
+                 now.line_misses - before.line_misses, now.bytes_fetched - before.bytes_fetched});
+    }
+  return t;
+}
+
+}  // namespace
+
 Frame render_frame(const FrameSpec& spec) {
+  if (spec.frames == 0) throw InputError("--frames 0: expected at least one frame");
+  if (spec.frames > 1 && spec.hierarchy.levels.empty())
+    throw InputError("--frames " + std::to_string(spec.frames) +
+                     ": repeated frames are simulated through a cache hierarchy: add --level SPEC (one or more)");
   const SceneRenderFlags& flags = spec.flags;
   RenderOptions options = render_options_from(flags);
   const VertexCacheSpec vcache = parse_vertex_cache(spec.vcache, "--vcache");
@@ -56,6 +92,10 @@ Frame render_frame(const FrameSpec& spec) {
   LiveBankSink bank(frame_bank_config(caches), levels,
                     FrameSize{static_cast<std::uint32_t>(scene.width), static_cast<std::uint32_t>(scene.height)});
   std::vector<EventSink*> sinks = {&bank};
+  std::vector<HierarchySpec> hierarchies;
+  if (!spec.hierarchy.levels.empty()) hierarchies.push_back(parse_hierarchy(spec.hierarchy));
+  HierarchySink hierarchy_sink(hierarchies, levels);
+  if (!hierarchies.empty()) sinks.push_back(&hierarchy_sink);
   std::optional<TraceWriter> writer;
   if (!spec.trace.empty()) {
     TraceMetadata metadata = render_trace_metadata(flags, scene, levels);
@@ -67,7 +107,7 @@ Frame render_frame(const FrameSpec& spec) {
     sinks.push_back(&*writer);
   }
   TeeSink tee(sinks);
-  Frame frame{render_scene(scene, options, &tee), {}};  // render_scene calls finish() on every sink
+  Frame frame{render_scene(scene, options, &tee), {}, {}};  // render_scene calls finish() on every sink
 
   const PipelineStats& p = frame.result.pipeline;
   const RasterStats& r = frame.result.raster;
@@ -132,6 +172,10 @@ Frame render_frame(const FrameSpec& spec) {
     row.push_back(v.lane_slots ? TableCell(v.lane_use()) : TableCell());
   }
   table.add_row(std::move(row));
+  if (!hierarchies.empty())
+    frame.hierarchy.push_back(hierarchy_table({{"scene", flags.scene}, {"raster", flags.raster}, {"order", flags.order}},
+                                              hierarchies.front(), hierarchy_sink.hierarchy(0)));
+  if (spec.frames > 1) frame.hierarchy.push_back(repeated_frames_table(spec, scene, options, hierarchy_sink));
   return frame;
 }
 

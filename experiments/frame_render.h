@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/table.h"
+#include "experiments/hierarchy_tables.h"
 #include "experiments/render_settings.h"
 #include "pipeline/render_scene.h"
 
@@ -24,11 +25,17 @@ struct FrameSpec {
   std::string vipm;   // a VIPM method: draw the LoD `lod` instead of an ordering
   std::string lod;    // collapses done, with vipm
   std::string image;  // where the caller writes the image: stated in the table only
+  HierarchyRequest hierarchy;  // render --level ...: a texture cache hierarchy simulated live
+  // render --frames N: the frame drawn N times from the scene's (static) camera through the same
+  // hierarchy, which keeps its contents between frames (the inter-frame reuse of Cox, Bhandari and
+  // Shantz 1998); the table and the trace describe the first frame, the hierarchy table every frame.
+  unsigned frames = 1;
 };
 
 struct Frame {
   RenderResult result;
   Table table;  // one row; title "Frame: <scene>"
+  std::vector<Table> hierarchy;  // with spec.hierarchy: its "Cache hierarchy" table (per frame with frames > 1)
 };
 
 // Throws InputError for a bad scene, cache spec, ordering or VIPM setting.

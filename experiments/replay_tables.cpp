@@ -9,12 +9,18 @@
 #include "core/units.h"
 #include "experiments/cache_report.h"
 #include "traces/replay_file.h"
+#include "traces/tee_sink.h"
 
 namespace rastrace {
 
 std::vector<Table> replay_tables(const std::string& trace, const std::vector<std::string>& specs,
-                                 bool keep_vertex_cache, const std::string& option, bool progress_bar) {
+                                 bool keep_vertex_cache, const std::string& option, bool progress_bar,
+                                 const HierarchyRequest& hierarchy) {
   const TraceSummary summary = summarize_trace(trace);
+  // Hierarchies and sectored caches: hierarchy_sink.h (the --level hierarchy first, if any).
+  std::vector<HierarchySpec> hierarchies;
+  if (!hierarchy.levels.empty()) hierarchies.push_back(parse_hierarchy(hierarchy));
+  const std::size_t first_sectored = hierarchies.size();
   const SweepSource fallback = default_source(summary);
   CacheBankConfig bank;
   bank.flush_vertex_cache_per_draw = !keep_vertex_cache;
@@ -37,6 +43,20 @@ std::vector<Table> replay_tables(const std::string& trace, const std::vector<std
       } catch (const InputError& e) {
         throw InputError(option + " '" + text + "': " + e.what());
       }
+      if (choice.sector_bytes != 0) {
+        if (spec.source.value_or(fallback) == SweepSource::VertexBuffer)
+          throw InputError(option + " '" + text + "': sector= applies to texel and address caches, not source=vertex");
+        HierarchySpec sectored;
+        sectored.hierarchy.levels.push_back({choice.cache, choice.sector_bytes});
+        sectored.layout = choice.layout;
+        try {
+          CacheHierarchy check(sectored.hierarchy);
+        } catch (const InputError& e) {
+          throw InputError(option + " '" + text + "': " + e.what());
+        }
+        hierarchies.push_back(sectored);
+        continue;
+      }
       switch (spec.source.value_or(fallback)) {
         case SweepSource::Texel:
           bank.texture.push_back({choice.cache, choice.layout});
@@ -57,10 +77,12 @@ std::vector<Table> replay_tables(const std::string& trace, const std::vector<std
     throw_in_file(trace, "the trace has no framebuffer records (written before trace version 2, or by a "
                          "renderer without them): expected them for source=depth|colour caches");
   LiveBankSink sink(bank, summary.metadata.textures, FrameSize{summary.metadata.width, summary.metadata.height});
+  HierarchySink hierarchy_sink(hierarchies, summary.metadata.textures);
+  TeeSink both({&sink, &hierarchy_sink});
   std::optional<Progress> progress;
   if (progress_bar && summary.has_counts)
     progress.emplace("replay", summary.vertices + summary.texels + summary.addresses + summary.framebuffer);
-  replay_file(trace, sink, {}, progress ? &*progress : nullptr);
+  replay_file(trace, hierarchies.empty() ? static_cast<EventSink&>(sink) : both, {}, progress ? &*progress : nullptr);
   if (progress) progress->finish();
 
   std::vector<Table> tables;
@@ -105,6 +127,9 @@ std::vector<Table> replay_tables(const std::string& trace, const std::vector<std
   add_byte_table(address_rows, sink.address_stats(), "Address caches", "address");
   if (!bank.framebuffer.empty())
     tables.push_back(framebuffer_cache_table(parameters, bank.framebuffer, sink.framebuffer_stats()));
+  if (hierarchies.size() > first_sectored)
+    tables.push_back(sectored_cache_table(parameters, hierarchies, hierarchy_sink, first_sectored));
+  if (first_sectored == 1) tables.push_back(hierarchy_table(parameters, hierarchies.front(), hierarchy_sink.hierarchy(0)));
   return tables;
 }
 

@@ -8,15 +8,19 @@
 #include <vector>
 
 #include "core/table.h"
+#include "experiments/hierarchy_tables.h"
 
 namespace rastrace {
 
 class Progress;
 
 // `option` names the specs in errors ("--cache"). keep_vertex_cache: the post-transform caches
-// keep their contents across draws. Throws InputError for a bad trace or spec.
+// keep their contents across draws. Byte caches with sector= become a "Sectored caches" table
+// (each a one-level hierarchy, hierarchy_tables.h); `hierarchy` (replay --level ...) adds a
+// "Cache hierarchy" table. The trace is read once for all of them. Throws InputError for a bad
+// trace or spec.
 std::vector<Table> replay_tables(const std::string& trace, const std::vector<std::string>& specs,
                                  bool keep_vertex_cache, const std::string& option = "--cache",
-                                 bool progress = true);
+                                 bool progress = true, const HierarchyRequest& hierarchy = {});
 
 }  // namespace rastrace

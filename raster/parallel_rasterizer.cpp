@@ -237,6 +237,7 @@ void ParallelRasterizer::rasterize_in_tile(Worker& worker, const Binned& triangl
                                            TileEvents& out, std::uint64_t texel_base, std::uint64_t event_base) {
   QuadStage stage{framebuffer_, options_, hiz_.get(), worker.texels, worker.framebuffer_events, worker.stats};
   const Traversal traversal = options_.traversal;
+  const unsigned hilbert_bits = traversal_hilbert_bits(framebuffer_.width(), framebuffer_.height());
   for_each_quad<kDebug>(triangle.setup, traversal, clip, [&](int qx, int qy, const std::int64_t* e) {
     stage.quad<kTextured, kDebug>(triangle.setup, triangle.state, qx, qy, e);
     if (!recording_) return;
@@ -244,8 +245,8 @@ void ParallelRasterizer::rasterize_in_tile(Worker& worker, const Binned& triangl
     const auto events_end = static_cast<std::uint32_t>(worker.framebuffer_events.records() - event_base);
     const QuadMark* last = out.quads.empty() ? nullptr : &out.quads.back();
     if (last ? (texel_end != last->texel_end || events_end != last->events_end) : (texel_end | events_end) != 0)
-      out.quads.push_back({quad_order_key(traversal, qx, qy), texel_end, events_end});
-  });
+      out.quads.push_back({quad_order_key(traversal, qx, qy, hilbert_bits), texel_end, events_end});
+  }, hilbert_bits);
 }
 
 void ParallelRasterizer::replay(Batch& batch) {

@@ -9,7 +9,8 @@ namespace rastrace {
 namespace {
 
 constexpr EnumName<Traversal> kTraversals[] = {
-    {Traversal::Scanline, "scanline"}, {Traversal::Tiled8, "tiled8"}, {Traversal::Tiled8, "tiled"}};
+    {Traversal::Scanline, "scanline"}, {Traversal::Tiled8, "tiled8"}, {Traversal::Tiled8, "tiled"},
+    {Traversal::Hilbert8, "hilbert"}};
 
 }  // namespace
 
@@ -26,7 +27,11 @@ DepthTest parse_depth_test(const std::string& text) { return parse_enum(text, kD
 const char* to_string(DepthTest test) { return enum_to_string(test, kDepthTests); }
 
 Rasterizer::Rasterizer(Framebuffer& framebuffer, const RasterOptions& options, EventSink* sink)
-    : framebuffer_(framebuffer), options_(options), recorder_(sink), framebuffer_recorder_(sink) {
+    : framebuffer_(framebuffer),
+      options_(options),
+      recorder_(sink),
+      framebuffer_recorder_(sink),
+      hilbert_bits_(traversal_hilbert_bits(framebuffer.width(), framebuffer.height())) {
   if (options_.threads > 1) {
     parallel_ = std::make_unique<ParallelRasterizer>(framebuffer, options_, sink);
     return;
@@ -93,9 +98,10 @@ template <bool kTextured, bool kDebug>
 void Rasterizer::traverse(const TriangleSetup& s, const TriangleState& state) {
   QuadStage stage{framebuffer_, options_, hiz_.get(), recorder_, framebuffer_recorder_, stats_};
   const PixelRect image{0, 0, framebuffer_.width() - 1, framebuffer_.height() - 1};
-  for_each_quad<kDebug>(s, options_.traversal, image, [&](int qx, int qy, const std::int64_t* e) {
-    stage.quad<kTextured, kDebug>(s, state, qx, qy, e);
-  });
+  for_each_quad<kDebug>(
+      s, options_.traversal, image,
+      [&](int qx, int qy, const std::int64_t* e) { stage.quad<kTextured, kDebug>(s, state, qx, qy, e); },
+      hilbert_bits_);
 }
 
 }  // namespace rastrace

@@ -108,6 +108,7 @@ class Rasterizer {
   TexelRecorder recorder_;
   FramebufferRecorder framebuffer_recorder_;
   RasterStats stats_;
+  unsigned hilbert_bits_;                         // traversal_hilbert_bits of the framebuffer
   std::unique_ptr<HierarchicalZ> hiz_;            // hierarchical Z only
   std::unique_ptr<ParallelRasterizer> parallel_;  // threads > 1 only
 };

@@ -13,6 +13,9 @@
 #include <cstdint>
 #include <string>
 
+#include <vector>
+
+#include "raster/hilbert_order.h"
 #include "raster/triangle_setup.h"
 
 namespace rastrace {
@@ -20,8 +23,9 @@ namespace rastrace {
 enum class Traversal : std::uint8_t {
   Scanline,  // quad rows top to bottom, left to right in each
   Tiled8,    // 8x8-pixel tiles row-major over the bounding box, quads row-major inside a tile
+  Hilbert8,  // the same tiles in the screen's Hilbert-curve order (hilbert_order.h), quads row-major inside
 };
-// "scanline" or "tiled8" (alias "tiled"); throws InputError otherwise.
+// "scanline", "tiled8" (alias "tiled") or "hilbert"; throws InputError otherwise.
 Traversal parse_traversal(const std::string& text);
 const char* to_string(Traversal traversal);
 
@@ -30,24 +34,39 @@ struct PixelRect {
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
 };
 
-inline constexpr int kTraversalTile = 8;  // the 8x8 tiles of Tiled8 (and of hierarchical Z)
+inline constexpr int kTraversalTile = 8;  // the 8x8 tiles of Tiled8 and Hilbert8 (and of hierarchical Z)
 
 // How far the bounding box's corner is aligned down (setup_triangle's `align`).
-inline int traversal_alignment(Traversal traversal) { return traversal == Traversal::Tiled8 ? kTraversalTile : 2; }
+inline int traversal_alignment(Traversal traversal) {
+  return traversal == Traversal::Scanline ? 2 : kTraversalTile;
+}
+
+// The order of the Hilbert curve that covers a width x height screen with 8x8 tiles (the curve is
+// the screen's, so every triangle visits shared tiles in the same relative order).
+inline unsigned traversal_hilbert_bits(int width, int height) {
+  return hilbert_bits(static_cast<std::uint32_t>((width + kTraversalTile - 1) / kTraversalTile),
+                      static_cast<std::uint32_t>((height + kTraversalTile - 1) / kTraversalTile));
+}
 
 // Increasing along the traversal order within one triangle; quads of any image up to 16384 pixels.
-inline std::uint32_t quad_order_key(Traversal traversal, int qx, int qy) {
+// `hilbert_bits`: traversal_hilbert_bits of the screen (Hilbert8 only).
+inline std::uint32_t quad_order_key(Traversal traversal, int qx, int qy, unsigned hilbert_bits = 0) {
   const auto x = static_cast<std::uint32_t>(qx), y = static_cast<std::uint32_t>(qy);
   if (traversal == Traversal::Scanline) return (y >> 1) << 13 | (x >> 1);
+  if (traversal == Traversal::Hilbert8)  // tile index along the curve (22 bits at most), quad in the tile
+    return static_cast<std::uint32_t>(hilbert_index(x >> 3, y >> 3, hilbert_bits)) << 4 | ((y & 7) >> 1) << 2 |
+           ((x & 7) >> 1);
   // Tile row, tile column, quad row in the tile, quad column in the tile.
   return (y >> 3) << 15 | (x >> 3) << 4 | ((y & 7) >> 1) << 2 | ((x & 7) >> 1);
 }
 
 // Calls visit(qx, qy, e) for every quad of the triangle's box inside `clip`, in the traversal's
 // order; e[k] is edge function k at the quad's top-left pixel centre. Tiled8 skips 8x8 tiles that
-// one edge excludes entirely, unless kVisitAll (the debug planes look at every quad).
+// one edge excludes entirely, unless kVisitAll (the debug planes look at every quad). Hilbert8
+// visits the same tiles as Tiled8 along the screen's curve of order `hilbert_bits`.
 template <bool kVisitAll, typename Visit>
-void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect& clip, Visit&& visit) {
+void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect& clip, Visit&& visit,
+                   unsigned hilbert_bits = 0) {
   const int x_begin = std::max(s.x0, clip.x0), y_begin = std::max(s.y0, clip.y0);
   const int x_end = std::min(s.x1, clip.x1), y_end = std::min(s.y1, clip.y1);
   if (x_begin > x_end || y_begin > y_end) return;
@@ -72,22 +91,39 @@ void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect&
   for (int k = 0; k < 3; ++k)
     tile_max[k] =
         std::max<std::int64_t>(0, s.step_x[k]) * (kTile - 1) + std::max<std::int64_t>(0, s.step_y[k]) * (kTile - 1);
+  // The quads of one tile inside the clip, row-major; `tile` holds the edge functions at its top-left pixel.
+  const auto quads_of_tile = [&](int tx, int ty, const std::int64_t* tile) {
+    std::int64_t quad_row[3] = {tile[0], tile[1], tile[2]};
+    for (int qy = ty; qy < ty + kTile && qy <= y_end; qy += 2) {
+      std::int64_t e[3] = {quad_row[0], quad_row[1], quad_row[2]};
+      for (int qx = tx; qx < tx + kTile && qx <= x_end; qx += 2) {
+        visit(qx, qy, static_cast<const std::int64_t*>(e));
+        for (int k = 0; k < 3; ++k) e[k] += 2 * s.step_x[k];
+      }
+      for (int k = 0; k < 3; ++k) quad_row[k] += 2 * s.step_y[k];
+    }
+  };
+  if (traversal == Traversal::Hilbert8) {
+    thread_local std::vector<std::uint64_t> tiles;  // reused: allocates only when a triangle is bigger
+    hilbert_tiles(static_cast<std::uint32_t>(x_begin / kTile), static_cast<std::uint32_t>(y_begin / kTile),
+                  static_cast<std::uint32_t>(x_end / kTile), static_cast<std::uint32_t>(y_end / kTile), hilbert_bits,
+                  tiles);
+    for (const std::uint64_t packed : tiles) {
+      const int tx = static_cast<int>(packed & 0xFFFFFFFFu) * kTile, ty = static_cast<int>(packed >> 32) * kTile;
+      std::int64_t tile[3];
+      for (int k = 0; k < 3; ++k) tile[k] = s.origin[k] + (tx - s.x0) * s.step_x[k] + (ty - s.y0) * s.step_y[k];
+      const bool outside = tile[0] + tile_max[0] + s.bias[0] < 0 || tile[1] + tile_max[1] + s.bias[1] < 0 ||
+                           tile[2] + tile_max[2] + s.bias[2] < 0;
+      if (!outside || kVisitAll) quads_of_tile(tx, ty, tile);
+    }
+    return;
+  }
   for (int ty = y_begin; ty <= y_end; ty += kTile) {
     std::int64_t tile[3] = {row[0], row[1], row[2]};
     for (int tx = x_begin; tx <= x_end; tx += kTile) {
       const bool outside = tile[0] + tile_max[0] + s.bias[0] < 0 || tile[1] + tile_max[1] + s.bias[1] < 0 ||
                            tile[2] + tile_max[2] + s.bias[2] < 0;
-      if (!outside || kVisitAll) {
-        std::int64_t quad_row[3] = {tile[0], tile[1], tile[2]};
-        for (int qy = ty; qy < ty + kTile && qy <= y_end; qy += 2) {
-          std::int64_t e[3] = {quad_row[0], quad_row[1], quad_row[2]};
-          for (int qx = tx; qx < tx + kTile && qx <= x_end; qx += 2) {
-            visit(qx, qy, static_cast<const std::int64_t*>(e));
-            for (int k = 0; k < 3; ++k) e[k] += 2 * s.step_x[k];
-          }
-          for (int k = 0; k < 3; ++k) quad_row[k] += 2 * s.step_y[k];
-        }
-      }
+      if (!outside || kVisitAll) quads_of_tile(tx, ty, tile);
       for (int k = 0; k < 3; ++k) tile[k] += kTile * s.step_x[k];
     }
     for (int k = 0; k < 3; ++k) row[k] += kTile * s.step_y[k];

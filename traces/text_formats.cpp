@@ -232,7 +232,15 @@ std::uint64_t import_din(const std::string& path, EventSink& sink) {
     if (label > 4)
       throw_at_line(path, line,
                     "label " + std::to_string(label) + ": expected 0 (read), 1 (write), 2 (fetch) or 3 (escape)");
-    batch.push_back({number<std::uint64_t>(address_text, path, line, "address", 16), static_cast<std::uint8_t>(label)});
+    const std::uint64_t address = number<std::uint64_t>(address_text, path, line, "address", 16);
+    // Extended din (Dinero IV's default): a third field, the access size in hexadecimal. The
+    // access is one reference at its first byte, as our export writes them (never across a line).
+    if (const std::string_view size_text = word(); !size_text.empty()) {
+      if (number<std::uint64_t>(size_text, path, line, "size", 16) == 0)
+        throw_at_line(path, line, "size 0: expected the access size in bytes (hexadecimal, at least 1)");
+      if (!word().empty()) throw_at_line(path, line, "expected 'label hexaddress [hexsize]' (extended din)");
+    }
+    batch.push_back({address, static_cast<std::uint8_t>(label)});
     if (batch.size() == kBatch) {
       sink.address_accesses(batch);
       total += batch.size();

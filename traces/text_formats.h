@@ -6,6 +6,8 @@
 //   first line is "# rastrace metadata: <metadata JSON>".
 //   Dinero IV din (import): "label hexaddress" per line, label 0 read, 1 write, 2 instruction
 //   fetch (all three are accesses); 3 (escape) lines are skipped; 4 (cache flush) is refused.
+//   Extended din, Dinero IV's default, adds a third field, the size in hexadecimal: it is checked
+//   and the access counted once, at its first byte (cache_sim/trace_export.h writes this format).
 // Malformed lines give an InputError "file:line: ..." saying what was expected.
 #pragma once
 

@@ -24,7 +24,7 @@ struct ReproducedFigure {
 };
 
 struct ReproduceOptions {
-  std::string papers = "all";  // all, or a comma-separated list of castano, hoppe, yang, sander, forsyth
+  std::string papers = "all";  // all, or a comma-separated list of castano, hoppe, yang, sander, forsyth, hakura
   // Hoppe's local optimization: perturbation searches (the paper ran to convergence).
   std::uint64_t local_iterations = 8000;
 };
@@ -36,6 +36,8 @@ std::vector<ReproducedFigure> reproduce_yang();
 std::vector<ReproducedFigure> reproduce_yang_texture();
 std::vector<ReproducedFigure> reproduce_sander2008();
 std::vector<ReproducedFigure> reproduce_forsyth();
+// Renders the bunny, the spider and the grid twice each (scanline, tiled8): under a minute.
+std::vector<ReproducedFigure> reproduce_hakura();
 
 // One table: paper, figure, meshes, published, ours, difference (ours - published) and its
 // percentage, note. Throws InputError for an unknown paper name.

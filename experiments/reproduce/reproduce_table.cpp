@@ -41,6 +41,7 @@ Table reproduction_table(const ReproduceOptions& options) {
       {"yang-texture", [](const ReproduceOptions&) { return reproduce_yang_texture(); }},
       {"sander", [](const ReproduceOptions&) { return reproduce_sander2008(); }},
       {"forsyth", [](const ReproduceOptions&) { return reproduce_forsyth(); }},
+      {"hakura", [](const ReproduceOptions&) { return reproduce_hakura(); }},
   };
   std::vector<std::string> wanted;
   std::stringstream list(options.papers);
@@ -48,11 +49,11 @@ Table reproduction_table(const ReproduceOptions& options) {
     bool known = name == "all";
     for (const auto& [paper, run] : papers) known |= name == paper;
     if (!known)
-      throw InputError("--paper '" + name + "': expected all, castano, hoppe, yang, yang-texture, sander or forsyth");
+      throw InputError("--paper '" + name + "': expected all, castano, hoppe, yang, yang-texture, sander, forsyth or hakura");
     wanted.push_back(name);
   }
   if (wanted.empty())
-    throw InputError("--paper '': expected all, castano, hoppe, yang, yang-texture, sander or forsyth");
+    throw InputError("--paper '': expected all, castano, hoppe, yang, yang-texture, sander, forsyth or hakura");
 
   Table table;
   table.title = "Published figures (REFERENCE.md) and rastrace's";

@@ -49,7 +49,7 @@ TEST(RenderCommand, BadOptionsAreErrorsAndLeaveNoFile) {
   EXPECT_NE(r.err.find("--tcache assoc: '4way': expected a whole number"), std::string::npos) << r.err;
   r = run({"render", "builtin:grid", "-o", image, "--raster", "zigzag"});
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("expected scanline or tiled8"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("expected scanline, tiled8 or hilbert"), std::string::npos) << r.err;
   r = run({"render", "builtin:grid", "-o", image, "--size", "0x10"});
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_FALSE(std::filesystem::exists(image));

@@ -1,0 +1,38 @@
+#include "cache_sim/hierarchy_sink.h"
+
+#include "core/error.h"
+
+namespace rastrace {
+
+HierarchySink::HierarchySink(const std::vector<HierarchySpec>& specs, const TextureLevels& textures) {
+  hierarchies_.reserve(specs.size());
+  for (const HierarchySpec& spec : specs) {
+    HierarchyConfig config = spec.hierarchy;
+    config.element_bytes = spec.layout.texel_bytes;
+    hierarchies_.emplace_back(std::move(config));
+    layouts_.emplace_back(spec.layout, textures);
+  }
+}
+
+void HierarchySink::texel_accesses(std::span<const TexelAccess> accesses) {
+  texel_records_ += accesses.size();
+  for (std::size_t h = 0; h < hierarchies_.size(); ++h) {
+    CacheHierarchy& hierarchy = hierarchies_[h];
+    const TextureLayout& layout = layouts_[h];
+    for (const TexelAccess& t : accesses) {
+      if (!layout.contains(t.texture, t.level, t.x, t.y)) [[unlikely]]
+        throw InputError("texel access (texture " + std::to_string(t.texture) + ", level " + std::to_string(t.level) +
+                         ", x " + std::to_string(t.x) + ", y " + std::to_string(t.y) + ", triangle " +
+                         std::to_string(t.triangle) + ") lies outside the textures whose level sizes the trace " +
+                         "metadata lists");
+      hierarchy.access(layout.address(t.texture, t.level, t.x, t.y), hierarchy.unit_of_pixel(t.pixel_x, t.pixel_y));
+    }
+  }
+}
+
+void HierarchySink::address_accesses(std::span<const AddressAccess> accesses) {
+  for (CacheHierarchy& hierarchy : hierarchies_)
+    for (const AddressAccess& a : accesses) hierarchy.access(a.address, 0);
+}
+
+}  // namespace rastrace
