@@ -11,6 +11,7 @@
 #include <assimp/Importer.hpp>
 
 #include "core/error.h"
+#include "core/input_guard.h"
 #include "scenes/mesh_io.h"
 
 namespace rastrace {
@@ -59,9 +60,7 @@ void read_texture(const std::string& path, const aiScene& scene, const aiMateria
 }  // namespace
 
 Mesh load_with_assimp(const std::string& path) {
-  std::error_code error;
-  if (!fs::exists(path, error)) throw_in_file(path, "no such file");
-  if (fs::is_directory(path, error)) throw_in_file(path, "is a directory, expected a file");
+  require_regular_file(path);
   Assimp::Importer importer;
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   const aiScene* scene =

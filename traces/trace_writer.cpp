@@ -53,8 +53,14 @@ TraceWriter::TraceWriter(const std::string& path, TraceMetadata metadata, TraceW
 TraceWriter::~TraceWriter() = default;
 
 void TraceWriter::write(const void* data, std::size_t size) {
+  // After a failed write the file is lost: later events (from destructors flushing while the
+  // first error unwinds) are dropped instead of throwing again, and finish() reports it.
+  if (failed_) return;
   state_->file.stream().write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
-  if (!state_->file.stream()) throw_in_file(state_->path, "write failed (disk full?)");
+  if (!state_->file.stream()) {
+    failed_ = true;
+    throw_in_file(state_->path, "write failed (disk full?)");
+  }
   offset_ += size;
 }
 
@@ -170,6 +176,7 @@ void TraceWriter::end_draw() {
 
 void TraceWriter::finish() {
   if (finished_) return;
+  if (failed_) throw_in_file(state_->path, "write failed (disk full?)");
   if (draw_open_) flush_vertices(true);
   flush_texels();
   flush_framebuffer();
@@ -193,7 +200,7 @@ void TraceWriter::finish() {
   footer.append(kTraceEndMagic, 8);
   write(index.data(), index.size());
   write(footer.data(), footer.size());
-  state_->file.commit();
+  state_->file.commit();  // flushes: throws "write failed" when the last bytes do not fit
   finished_ = true;
 }
 

@@ -62,6 +62,7 @@ class TraceWriter : public EventSink {
   std::uint64_t offset_ = 0;
   std::uint64_t counts_[5] = {0, 0, 0, 0, 0};
   bool finished_ = false;
+  bool failed_ = false;  // a write failed: the file is lost
   // Open draw: its info, whether its first chunk has been written.
   bool draw_open_ = false;
   bool draw_started_ = false;
