@@ -41,7 +41,8 @@ std::uint64_t allocation_limit_bytes() {
   const long pages = ::sysconf(_SC_PHYS_PAGES);
   const long page_bytes = ::sysconf(_SC_PAGESIZE);
   if (pages <= 0 || page_bytes <= 0) return std::uint64_t{1} << 40;
-  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_bytes);
+  // Half the machine: one table sized by input must leave room for everything else.
+  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page_bytes) / 2;
 }
 
 std::uint64_t checked_bytes(std::uint64_t count, std::uint64_t element_bytes, const std::string& what) {
@@ -51,7 +52,7 @@ std::uint64_t checked_bytes(std::uint64_t count, std::uint64_t element_bytes, co
   if (overflows || count * element_bytes > limit)
     throw InputError(what + ": needs " + asked + " bytes (" + std::to_string(count) + " x " +
                      std::to_string(element_bytes) + "), more than the limit of " + std::to_string(limit) +
-                     " bytes (physical memory, or RASTRACE_MEMORY_LIMIT)");
+                     " bytes (half the physical memory, or RASTRACE_MEMORY_LIMIT)");
   return count * element_bytes;
 }
 

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace rastrace {
 
@@ -20,9 +21,20 @@ void require_regular_file(const std::string& path);
 
 // count * element_bytes, checked before allocating: throws InputError "<what>: needs N bytes
 // (count x element_bytes), more than the limit of L bytes" when the product overflows or exceeds
-// the limit: the machine's physical memory, or RASTRACE_MEMORY_LIMIT (bytes) when set.
+// the limit: half the machine's physical memory, or RASTRACE_MEMORY_LIMIT (bytes) when set.
 std::uint64_t checked_bytes(std::uint64_t count, std::uint64_t element_bytes, const std::string& what);
 // The limit checked_bytes() applies.
 std::uint64_t allocation_limit_bytes();
+
+// Grows a table indexed by ids read from input (vertex indices...) so that `index` fits, at least
+// doubling it, after checked_bytes(): a stray index near 2^32 is a clear error, not bad_alloc.
+template <typename T>
+void grow_to_cover(std::vector<T>& table, std::uint64_t index, const std::string& what, const T& fill = T{}) {
+  if (index < table.size()) return;
+  const std::uint64_t doubled = static_cast<std::uint64_t>(table.size()) * 2;
+  const std::uint64_t size = index + 1 > doubled ? index + 1 : doubled;
+  checked_bytes(size, sizeof(T), what + " (index " + std::to_string(index) + ")");
+  table.resize(static_cast<std::size_t>(size), fill);
+}
 
 }  // namespace rastrace

@@ -382,6 +382,7 @@ Camera frame_bounds(const glm::vec3& lo, const glm::vec3& hi, float aspect) {
 
 void load_scene_textures(Scene& scene) {
   std::map<std::tuple<int, std::string, int, int>, int> loaded;
+  std::uint64_t procedural_bytes = 0;
   for (SceneObject& object : scene.objects)
     for (Material& material : object.mesh.materials) {
       const TextureSource& source = material.texture_source;
@@ -392,6 +393,11 @@ void load_scene_textures(Scene& scene) {
       const auto key = std::make_tuple(static_cast<int>(source.kind), source.path, source.size, source.checks);
       auto it = loaded.find(key);
       if (it == loaded.end()) {
+        if (source.kind != TextureSource::Kind::File) {
+          // RGBA8 texels and a mip chain (4/3 of the base level), summed over the scene's textures.
+          procedural_bytes += std::uint64_t(source.size) * std::uint64_t(source.size) * 4 * 4 / 3;
+          checked_bytes(procedural_bytes, 1, scene.name + ": procedural textures");
+        }
         scene.textures.push_back(load_texture(source));
         it = loaded.emplace(key, static_cast<int>(scene.textures.size()) - 1).first;
       }

@@ -374,7 +374,9 @@ void TraceReader::fail_if_trailing_data(std::ifstream& in_, std::uint64_t index_
   const std::uint64_t count = load<std::uint64_t>(index_header + 8);
   if (count > file_bytes_ / 24) return;
   const std::uint64_t footer_at = index_offset + 16 + count * 24;
-  if (footer_at + kFooterBytes >= file_bytes_) return;
+  if (footer_at + kFooterBytes == file_bytes_)  // the file ends where its footer should
+    throw_at_byte(path_, footer_at + 16, "damaged footer: the end magic is not 'RTRCEND1'");
+  if (footer_at + kFooterBytes > file_bytes_) return;
   std::uint8_t footer[kFooterBytes];
   in_.clear();
   in_.seekg(static_cast<std::streamoff>(footer_at));
