@@ -114,7 +114,9 @@ void read_in_contained_child(const std::string& path) {
   if (WIFSIGNALED(status))
     throw_in_file(path, "assimp crashed reading it (signal " + std::to_string(WTERMSIG(status)) + ", " +
                             ::strsignal(WTERMSIG(status)) + "): the file is damaged or not what its extension says");
-  throw_in_file(path, "assimp failed reading it (exit status " + std::to_string(WEXITSTATUS(status)) + ")");
+  // A sanitizer's crash handler turns the signal into an exit status.
+  throw_in_file(path, "assimp crashed reading it (exit status " + std::to_string(WEXITSTATUS(status)) +
+                          "): the file is damaged or not what its extension says");
 }
 
 }  // namespace
