@@ -66,8 +66,8 @@ void add_meshlets_command(CLI::App& app) {
                    "all, or a list of scan (in stream order), greedy (grows by shared vertices), spatial "
                    "(bisection of centroids), meshopt, meshopt-scan (meshoptimizer's, in the same process)")
       ->capture_default_str();
-  command->add_option("--max-vertices", options->max_vertices, "Vertices per meshlet (3-256)")->check(whole_number(3, 256))->capture_default_str();
-  command->add_option("--max-triangles", options->max_triangles, "Triangles per meshlet (1-512)")->check(whole_number(1, 512))
+  command->add_option("--max-vertices", options->max_vertices, "Vertices per meshlet (3-256)")->check(whole_number(0, 4294967295))->capture_default_str();
+  command->add_option("--max-triangles", options->max_triangles, "Triangles per meshlet (1-512)")->check(whole_number(0, 4294967295))
       ->capture_default_str();
   command
       ->add_option("--cache", options->cache,

@@ -92,7 +92,7 @@ void add_vcache_command(CLI::App& app) {
                    "misses (true FIFO/LRU misses) or evictions (transforms as NVIDIA Mesh Tools charged "
                    "them, as in Castano's grid tables; FIFO only)")
       ->capture_default_str();
-  command->add_option("--vertex-bytes", options->vertex_bytes, "Bytes per vertex: vertex fetch and bandwidth")->check(whole_number(1, 65536))
+  command->add_option("--vertex-bytes", options->vertex_bytes, "Bytes per vertex: vertex fetch and bandwidth")->check(whole_number(0, 4294967295))
       ->capture_default_str();
   command
       ->add_option("--fetch", options->fetch,

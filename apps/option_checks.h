@@ -2,6 +2,8 @@
 // CLI11 alone reads "-5" into an unsigned as 2^64-5, "18446744073709551616" as a wrapped value and
 // "nan" as a number of seconds. An out-of-range value is a usage error naming the option and the
 // accepted range:  --iterations: expected a whole number from 0 to 100000000, found '1e18'
+// Where a command checks a narrower range itself (exit 1, naming the option), the validator only
+// guards the text: no sign, no exponent, no overflow of the option's type.
 #pragma once
 
 #include <cstdint>
