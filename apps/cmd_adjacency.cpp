@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "apps/option_checks.h"
 #include "cache_sim/cache_spec.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -107,9 +108,9 @@ void add_adjacency_command(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--order", options->order, "careful, fast, baseline, baseline-mesh or all")
       ->capture_default_str();
-  command->add_option("--seed", options->seed, "Seed of the cover's local search")->capture_default_str();
+  command->add_option("--seed", options->seed, "Seed of the cover's local search")->check(whole_number(0, 9223372036854775807))->capture_default_str();
   command->add_option("--iterations", options->iterations,
-                      "Local-search iterations for the cover (default: 20 per face)");
+                      "Local-search iterations for the cover (default: 20 per face)")->check(whole_number(0, 100000000));
   command->add_option("--format", options->format, "md, csv, latex or json")->capture_default_str();
   command->add_option("-o,--output", options->output,
                       "Write the index buffer of the first ordering (.bin: uint32 little-endian; else text)");
@@ -117,7 +118,7 @@ void add_adjacency_command(CLI::App& app) {
                     "Draw each ordering through the pipeline's edge stage: shader invocations, faces and "
                     "edges processed, silhouette and sharp (60 degree) edges");
   command->add_option("--lines", options->lines, "Write the first ordering's silhouette/sharp/boundary lines (PNG)");
-  command->add_option("--size", options->size, "Image size for --edges/--lines (square)")->capture_default_str();
+  command->add_option("--size", options->size, "Image size for --edges/--lines (square)")->check(whole_number(1, 16384))->capture_default_str();
   command->add_flag("--no-time", options->no_time, "Leave out the timing columns so outputs compare byte for byte");
   command->footer(
       "Examples:\n"

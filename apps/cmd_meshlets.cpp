@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "apps/option_checks.h"
 #include "cache_sim/cache_spec.h"
 #include "core/error.h"
 #include "experiments/meshlet_file.h"
@@ -65,14 +66,14 @@ void add_meshlets_command(CLI::App& app) {
                    "all, or a list of scan (in stream order), greedy (grows by shared vertices), spatial "
                    "(bisection of centroids), meshopt, meshopt-scan (meshoptimizer's, in the same process)")
       ->capture_default_str();
-  command->add_option("--max-vertices", options->max_vertices, "Vertices per meshlet (3-256)")->capture_default_str();
-  command->add_option("--max-triangles", options->max_triangles, "Triangles per meshlet (1-512)")
+  command->add_option("--max-vertices", options->max_vertices, "Vertices per meshlet (3-256)")->check(whole_number(0, 4294967295))->capture_default_str();
+  command->add_option("--max-triangles", options->max_triangles, "Triangles per meshlet (1-512)")->check(whole_number(0, 4294967295))
       ->capture_default_str();
   command
       ->add_option("--cache", options->cache,
                    "The vertex cache of the in-meshlet ACMR, emptied at each meshlet (cache spec, README)")
       ->capture_default_str();
-  command->add_option("--seed", options->seed, "Seed of the randomized orderings")->capture_default_str();
+  command->add_option("--seed", options->seed, "Seed of the randomized orderings")->check(whole_number(0, 9223372036854775807))->capture_default_str();
   command->add_option("--format", options->format, "md, csv, latex or json")->capture_default_str();
   command->add_flag("--no-time", options->no_time, "Leave out the run-time column so outputs compare byte for byte");
   command->add_option("-o,--output", options->output,

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "apps/commands.h"
+#include "apps/option_checks.h"
 #include "core/error.h"
 #include "experiments/overdraw_table.h"
 #include "scenes/mesh_spec.h"
@@ -74,23 +75,23 @@ void add_overdraw_command(CLI::App& app) {
   command->add_option("mesh", options->mesh, "Mesh file, builtin:<scene> or grid:WxH")->required();
   command->add_option("--algo", options->algorithms, "all, or a comma-separated list of orderings")
       ->capture_default_str();
-  command->add_option("--cache", options->cache, "FIFO entries the orderings optimize for and ACMR is measured on")
+  command->add_option("--cache", options->cache, "FIFO entries the orderings optimize for and ACMR is measured on")->check(whole_number(1, 65536))
       ->capture_default_str();
   command
       ->add_option("--lambda", options->lambda,
-                   "tipsy-overdraw: cut clusters below lambda x Tipsy's ACMR (also meshopt's threshold)")
+                   "tipsy-overdraw: cut clusters below lambda x Tipsy's ACMR (also meshopt's threshold)")->check(finite_number(0, 1000))
       ->capture_default_str();
   command->add_option("--view", options->view, "front-to-back, back-to-front: direction the camera looks, X,Y,Z")
       ->capture_default_str();
-  command->add_option("--sphere", options->sphere, "Also measure from N directions on the sphere (Tootle-style)")
+  command->add_option("--sphere", options->sphere, "Also measure from N directions on the sphere (Tootle-style)")->check(whole_number(0, 10000))
       ->capture_default_str();
-  command->add_option("--resolution", options->resolution, "Pixels per side of each view")->capture_default_str();
+  command->add_option("--resolution", options->resolution, "Pixels per side of each view")->check(whole_number(1, 16384))->capture_default_str();
   command
       ->add_option("--rules", options->rules,
                    "Depth rules: exact, meshopt-fixed (upstream 2025) or meshopt-0.18 (Debian, its gradient defect)")
       ->capture_default_str();
   command->add_flag("--no-peer", options->no_peer, "Leave out the meshopt-overdraw and meshopt-full rows");
-  command->add_option("--seed", options->seed, "Seed of the randomized orderings")->capture_default_str();
+  command->add_option("--seed", options->seed, "Seed of the randomized orderings")->check(whole_number(0, 9223372036854775807))->capture_default_str();
   command->add_option("--format", options->format, "md, csv, latex or json")->capture_default_str();
   command->add_flag("--no-time", options->no_time, "Leave out the run-time column so outputs compare byte for byte");
   command->footer(

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "apps/option_checks.h"
 #include "cache_sim/vertex_cache.h"
 #include "cache_sim/vertex_fetch.h"
 #include "core/error.h"
@@ -75,10 +76,10 @@ void add_reorder_command(CLI::App& app) {
   auto options = std::make_shared<ReorderOptions>();
   command->add_option("mesh", options->mesh, "Mesh file, builtin:<scene> or grid:WxH")->required();
   command->add_option("--algo", options->algorithm, "Ordering algorithm (see `rastrace vcache --help`)")->required();
-  command->add_option("--cache", options->cache, "Cache size the ordering optimizes for")->capture_default_str();
+  command->add_option("--cache", options->cache, "Cache size the ordering optimizes for")->check(whole_number(1, 65536))->capture_default_str();
   command->add_option("--policy", options->policy, "fifo or lru")->capture_default_str();
-  command->add_option("--seed", options->seed, "Seed of the randomized orderings")->capture_default_str();
-  command->add_option("--time-budget", options->time_budget, "Seconds for iterative orderings (local)")
+  command->add_option("--seed", options->seed, "Seed of the randomized orderings")->check(whole_number(0, 9223372036854775807))->capture_default_str();
+  command->add_option("--time-budget", options->time_budget, "Seconds for iterative orderings (local)")->check(finite_number(0, 1e6))
       ->capture_default_str();
   command
       ->add_option("--vertices", options->vertices,

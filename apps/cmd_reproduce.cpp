@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "apps/option_checks.h"
 #include "experiments/cache_report.h"
 #include "experiments/reproduce/reproduce.h"
 
@@ -32,7 +33,7 @@ void add_reproduce_command(CLI::App& app) {
                   "all, or a comma-separated list of castano, hoppe, yang, yang-texture, sander, forsyth, hakura")
       ->capture_default_str();
   sub->add_option("--local-iterations", command->options.local_iterations,
-                  "Perturbation searches of Hoppe's local optimization")
+                  "Perturbation searches of Hoppe's local optimization")->check(whole_number(0, 1000000000))
       ->capture_default_str();
   sub->add_option("--format", command->format, "md, csv, latex or json")->capture_default_str();
   sub->add_option("-o,--output", command->output, "Write the table to FILE instead of standard output");

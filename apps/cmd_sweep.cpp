@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "apps/commands.h"
+#include "apps/option_checks.h"
 #include "apps/sweep_flags.h"
 #include "cache_sim/cache_spec.h"
 #include "core/error.h"
@@ -38,7 +39,7 @@ void add_sweep_command(CLI::App& app) {
       ->capture_default_str();
   o->retired.add(
       *command, {"entries", "size", "line", "assoc", "policy", "layout", "texel", "align", "seed", "source", "stride"});
-  command->add_option("--threads", o->threads, "Worker threads (0: one per core)")->capture_default_str();
+  command->add_option("--threads", o->threads, "Worker threads (0: one per core)")->check(whole_number(0, 1024))->capture_default_str();
   command->add_option("--format", o->format, "Table format: md, csv, latex or json")->capture_default_str();
   command->add_option("-o,--output", o->output, "Write the table to this file (atomically) instead of stdout");
   command->add_option("--plot", o->plot, "Also draw miss rate against cache size: FILE.png or FILE.svg (gnuplot)");

@@ -29,6 +29,9 @@ void add_trace_command(CLI::App& app) {
   info->footer("Example:\n  rastrace trace info frame.rtrace");
   info->callback([=] {
     TraceReader reader(*info_path);
+    // Every chunk is read and checked: the table below comes from the index alone, and a damaged
+    // file must not pass as sound.
+    verify_trace(reader);
     const TraceMetadata& m = reader.metadata();
     Table t;
     t.title = "Trace " + std::filesystem::path(*info_path).filename().string();
@@ -68,8 +71,21 @@ void add_trace_command(CLI::App& app) {
         reader.records(RecordKind::Vertex) + reader.records(RecordKind::Texel) + reader.records(RecordKind::Address) +
         reader.records(RecordKind::Framebuffer);
     t.parameters.emplace_back("file_bytes", reader.file_bytes());
+    t.parameters.emplace_back("verified", "all " + std::to_string(reader.chunks().size()) + " chunks");
     t.parameters.emplace_back("bytes_per_record", records ? double(reader.file_bytes()) / double(records) : 0.0);
     std::cout << render_table(t, parse_table_format(*info_format));
+  });
+
+  CLI::App* verify = command->add_subcommand("verify", "Read and check every chunk of a trace (checksums, records)");
+  auto verify_path = std::make_shared<std::string>();
+  verify->add_option("trace", *verify_path, "Trace file (.rtrace)")->required();
+  verify->footer("Exit 0 when the file is sound, 1 naming the first damaged chunk and its byte offset.\n"
+                 "Example:\n  rastrace trace verify frame.rtrace");
+  verify->callback([=] {
+    TraceReader reader(*verify_path);
+    const std::uint64_t records = verify_trace(reader);
+    std::cout << *verify_path << ": sound: " << reader.chunks().size() << " chunks, " << records << " records, "
+              << reader.file_bytes() << " bytes\n";
   });
 
   CLI::App* convert = command->add_subcommand("convert", "Convert a trace: .rtrace <-> .csv, .din -> .rtrace or .csv");
@@ -100,6 +116,8 @@ void add_trace_command(CLI::App& app) {
       "  rastrace trace convert frame.rtrace frame.oracleGeneral.bin --layout block4 --block 64B");
   convert->callback([=] {
     const std::string extension = std::filesystem::path(*out).extension().string();
+    if (std::filesystem::is_directory(*out))
+      throw InputError("trace convert: output '" + *out + "' is a directory: expected a .rtrace or .csv file name");
     const std::string name = std::filesystem::path(*out).filename().string();
     const bool libcachesim = name.ends_with(".oracleGeneral") || name.ends_with(".oracleGeneral.bin");
     if (extension == ".din" || libcachesim) {
@@ -127,8 +145,15 @@ void add_trace_command(CLI::App& app) {
         write_file_atomically(
             *out, [&](std::ostream& o) { export_csv(reader, o); }, false);
       } else {
-        // Through a temporary container: CSV export reads containers.
+        // Through a temporary container: CSV export reads containers. It goes whatever happens.
         const std::string temporary = *out + ".rtrace.tmp";
+        struct RemoveOnExit {
+          std::string path;
+          ~RemoveOnExit() {
+            std::error_code ignored;
+            std::filesystem::remove(path, ignored);
+          }
+        } remove_temporary{temporary};
         {
           TraceWriter writer(temporary, summary.metadata);
           replay_file(*in, writer);
@@ -136,7 +161,6 @@ void add_trace_command(CLI::App& app) {
         TraceReader reader(temporary);
         write_file_atomically(
             *out, [&](std::ostream& o) { export_csv(reader, o); }, false);
-        std::filesystem::remove(temporary);
       }
     } else if (extension == ".rtrace") {
       TraceWriter writer(*out, summary.metadata);

@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "apps/commands.h"
+#include "apps/option_checks.h"
 #include "cache_sim/cache_spec.h"
 #include "cache_sim/vertex_fetch.h"
 #include "core/error.h"
@@ -108,9 +109,9 @@ void add_vcache_command(CLI::App& app) {
   command->add_option("--plot", options->plot, "With models: bars of ACMR per ordering and model (PNG or SVG)");
   command->add_option("--policy", options->old_policy)->group("");  // the old spelling: an error naming the new
   command->add_option("--target", options->target,
-                      "Cache size the orderings optimize for (default: the simulated size)");
-  command->add_option("--seed", options->seed, "Seed of the randomized orderings")->capture_default_str();
-  command->add_option("--time-budget", options->time_budget, "Seconds for iterative orderings (local)")
+                      "Cache size the orderings optimize for (default: the simulated size)")->check(whole_number(1, 65536));
+  command->add_option("--seed", options->seed, "Seed of the randomized orderings")->check(whole_number(0, 9223372036854775807))->capture_default_str();
+  command->add_option("--time-budget", options->time_budget, "Seconds for iterative orderings (local)")->check(finite_number(0, 1e6))
       ->capture_default_str();
   command->add_option("--format", options->format, "md, csv, latex or json")->capture_default_str();
   command
@@ -118,7 +119,7 @@ void add_vcache_command(CLI::App& app) {
                    "misses (true FIFO/LRU misses) or evictions (transforms as NVIDIA Mesh Tools charged "
                    "them, as in Castano's grid tables; FIFO only)")
       ->capture_default_str();
-  command->add_option("--vertex-bytes", options->vertex_bytes, "Bytes per vertex: vertex fetch and bandwidth")
+  command->add_option("--vertex-bytes", options->vertex_bytes, "Bytes per vertex: vertex fetch and bandwidth")->check(whole_number(0, 4294967295))
       ->capture_default_str();
   command
       ->add_option("--fetch", options->fetch,

@@ -1,5 +1,6 @@
 #include "apps/render_flags.h"
 
+#include "apps/option_checks.h"
 #include "cache_sim/cache_spec.h"
 #include "core/error.h"
 #include "core/units.h"
@@ -26,7 +27,7 @@ void add_scene_render_flags(CLI::App& command, SceneRenderFlags& flags) {
                      "Raster threads (default: every core); images and traces are the same for any count");
   command.add_option("--order", flags.order, "Triangle ordering (rastrace reorder --help lists them)")
       ->capture_default_str();
-  command.add_option("--order-cache", flags.order_cache, "Cache size the ordering optimizes for")
+  command.add_option("--order-cache", flags.order_cache, "Cache size the ordering optimizes for")->check(whole_number(1, 65536))
       ->capture_default_str();
 }
 

@@ -3,6 +3,7 @@
 #include <bit>
 
 #include "core/error.h"
+#include "core/input_guard.h"
 
 namespace rastrace {
 
@@ -27,6 +28,8 @@ void ByteCache::clear() {
   accesses_ = misses_ = clock_ = 0;
   rng_ = CacheRng(config_.seed);
   const std::uint64_t lines = sets_ * ways_;
+  // Per line: a tag and a stamp (scan), or map entry, line, links (larger sets).
+  checked_bytes(lines, scan_ ? 16 : 40, "cache " + describe(config_) + ": simulator state");
   if (scan_) {
     tags_.assign(lines, ~std::uint64_t{0});
     stamps_.assign(lines, 0);

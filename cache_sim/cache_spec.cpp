@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "core/error.h"
+#include "core/input_guard.h"
 #include "core/units.h"
 
 namespace rastrace {
@@ -13,7 +14,7 @@ namespace {
 struct Context {
   const std::string& option;
   const std::string& text;
-  std::string where(const std::string& detail) const { return option + " '" + text + "': " + detail; }
+  std::string where(const std::string& detail) const { return option + " '" + excerpt(text, 80) + "': " + detail; }
 };
 
 enum KindMask : unsigned { kVertexKey = 1, kByteKey = 2, kBothKinds = 3 };
@@ -165,6 +166,8 @@ void set_texel(CacheSpec& s, const std::vector<std::string>& values, const Conte
 
 void set_align(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
   const std::uint64_t align = one_size(values, c, "align");
+  // Levels are aligned by rounding up offsets: beyond 1 GiB the arithmetic would overflow.
+  if (align > (std::uint64_t{1} << 30)) bad_value(c, "align", values.front(), "an alignment of at most 1GiB");
   for (LayoutSpec& l : s.layouts) l.alignment = align;
 }
 
@@ -324,8 +327,10 @@ CacheSpec parse_cache_spec(const std::string& text, const std::string& option) {
     std::vector<std::string> values;
   };
   std::vector<Item> items;
-  for (const std::string& item : split(text, ',')) {
+  // Empty items first: "12,,16" is a typo wherever it sits, whatever the other items say.
+  for (const std::string& item : split(text, ','))
     if (item.empty()) throw InputError(c.where("empty item; expected key=value items separated by ','"));
+  for (const std::string& item : split(text, ',')) {
     const std::size_t eq = item.find('=');
     if (eq == std::string::npos) {
       if (const std::string spelled = old_spelling(text); !spelled.empty())
@@ -403,6 +408,15 @@ CacheSpec parse_cache_spec(const std::string& text, const std::string& option) {
         std::find(spec.policies.begin(), spec.policies.end(), ReplacementPolicy::Opt) != spec.policies.end())
       throw InputError(c.where("policy=opt: a depth or colour cache writes back what it evicts; expected fifo, lru "
                                "or random"));
+  }
+  if (spec.kind == CacheKind::Byte) {
+    // Every configuration is simulated at once (16 bytes of state per line at least): refuse a
+    // list whose caches cannot fit before any work starts, not with bad_alloc halfway through.
+    std::uint64_t lines = 0;
+    for (const std::uint64_t size : spec.sizes)
+      for (const std::uint32_t line : spec.lines) lines += line ? size / line : 0;
+    lines *= spec.assocs.size() * spec.policies.size() * spec.layouts.size();
+    checked_bytes(lines, 16, c.where("the simulators of all " + std::to_string(spec.combinations()) + " caches"));
   }
   return spec;
 }

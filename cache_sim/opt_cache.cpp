@@ -6,6 +6,7 @@
 
 #include "cache_sim/line_map.h"
 #include "core/error.h"
+#include "core/input_guard.h"
 #include "core/units.h"
 
 namespace rastrace {
@@ -24,6 +25,7 @@ CacheStats simulate_opt(const CacheConfig& config, std::span<const std::uint64_t
   // next[i]: position of the next access to lines[i]; a line never used again gets a distinct
   // value above every position so that keys stay unique (needed by the lazy heaps below).
   std::vector<std::uint64_t> next(n);
+  std::uint64_t positions_seen = 0;  // distinct lines in the trace
   {
     LineMap last(1024);
     std::vector<std::uint64_t> positions;
@@ -38,10 +40,15 @@ CacheStats simulate_opt(const CacheConfig& config, std::span<const std::uint64_t
         positions[index] = i;
       }
     }
+    positions_seen = positions.size();
   }
 
-  const std::uint64_t ways = config.ways();
   const std::uint64_t sets = config.sets();
+  // A fully associative OPT cache holding every distinct line never evicts: more ways than
+  // distinct lines change nothing but the memory (1 GiB of 1-byte lines would need 40 GiB).
+  const std::uint64_t ways =
+      sets == 1 ? std::max<std::uint64_t>(1, std::min<std::uint64_t>(config.ways(), positions_seen)) : config.ways();
+  checked_bytes(sets * ways, 40, "cache " + describe(config) + ": OPT simulator state");
   const bool pow2 = std::has_single_bit(sets);
   const bool scan = ways <= 16;
   std::vector<std::uint64_t> slot_line(sets * ways), slot_next(sets * ways);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/input_guard.h"
 #include "core/enum_names.h"
 #include "core/error.h"
 
@@ -49,7 +50,7 @@ void VertexCache::push_front(std::uint32_t slot) {
 
 bool VertexCache::access_lru(std::uint32_t vertex) {
   if (vertex >= slot_of_.size())
-    slot_of_.resize(std::max<std::size_t>(std::size_t{vertex} + 1, slot_of_.size() * 2), 0);
+    grow_to_cover(slot_of_, vertex, "per-vertex LRU slots");
   if (const std::uint32_t found = slot_of_[vertex]) {
     if (found - 1 != head_) {
       unlink(found - 1);
@@ -83,7 +84,7 @@ VertexStreamStats simulate_fifo_list(std::span<const std::uint32_t> indices, uns
   std::uint64_t misses = 0, vertices = 0, degenerate = 0;
   const auto lookup = [&](std::uint32_t v) {
     if (v >= stamps.size()) [[unlikely]]
-      stamps.resize(std::max<std::size_t>(std::size_t{v} + 1, stamps.size() * 2), 0);
+      grow_to_cover(stamps, v, "per-vertex FIFO stamps");
     // Branch-free: a miss is data-dependent and mispredicts often; selects do not.
     std::uint32_t& stamp = stamps[v];
     const std::uint32_t old = stamp;
@@ -121,7 +122,7 @@ VertexStreamStats vertex_stream_shape(std::span<const std::uint32_t> indices, Pr
     ++stats.indices_sent;
     if (is_restart(type, restart_index, index)) continue;
     ++stats.lookups;
-    if (index >= seen.size()) seen.resize(static_cast<std::size_t>(index) + 1, false);
+    if (index >= seen.size()) grow_to_cover(seen, index, "per-vertex seen flags", false);
     if (!seen[index]) {
       seen[index] = true;
       ++stats.vertices;

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <string>
 
+#include "core/input_guard.h"
 #include "core/error.h"
 
 namespace rastrace {
@@ -133,7 +134,7 @@ void VertexCacheSizes::access_lru(std::span<const std::uint32_t> vertices) {
   if (depth_ == 0) return;
   for (const std::uint32_t v : vertices) {
     if (v >= in_stack_.size()) [[unlikely]]
-      in_stack_.resize(std::max<std::size_t>(std::size_t{v} + 1, in_stack_.size() * 2), 0);
+      grow_to_cover(in_stack_, v, "per-vertex LRU state");
     std::uint32_t d;
     if (in_stack_[v]) {
       d = 0;
@@ -155,6 +156,7 @@ void VertexCacheSizes::access_lru(std::span<const std::uint32_t> vertices) {
 
 void VertexCacheSizes::grow_fifo(std::uint32_t vertex) {
   const std::uint64_t ids = std::max<std::uint64_t>(std::uint64_t{vertex} + 1, ids_ * 2);
+  checked_bytes(ids * lanes_, sizeof(stamps_[0]), "per-vertex FIFO stamps (vertex index " + std::to_string(vertex) + ")");
   stamps_.resize(ids * lanes_, 0);  // 0: never inserted, a miss at any clock (clocks exceed sizes)
   ids_ = ids;
 }

@@ -1,5 +1,6 @@
-// Output files appear whole or not at all: data goes to "<path>.tmp.<pid>" and is renamed
-// over <path> only by commit(). An AtomicFile destroyed without commit() removes its temporary.
+// Output files appear whole or not at all: data goes to ".tmp.<pid>.<name>" beside <path> and is renamed
+// over <path> only by commit(). An AtomicFile destroyed without commit() removes its temporary;
+// one left by a killed process is removed by the next writer to the same path.
 #pragma once
 
 #include <filesystem>
@@ -32,6 +33,10 @@ class AtomicFile {
 // Writes a whole file through an AtomicFile.
 void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write,
                            bool binary = true);
+
+// Removes ".tmp.<pid>.<name>" files beside `path` whose process is no longer running (left by a
+// killed writer). Every AtomicFile and write_via_temporary() does this for its own path.
+void remove_stale_temporaries(const std::filesystem::path& path);
 
 // For writers that take a file name: calls write(temporary name), then renames it over path.
 void write_via_temporary(const std::filesystem::path& path,

@@ -5,12 +5,13 @@
 #include <limits>
 
 #include "core/error.h"
+#include "core/input_guard.h"
 
 namespace rastrace {
 namespace {
 
 [[noreturn]] void bad(const std::string& what, const std::string& text, const std::string& expected) {
-  throw InputError(what + ": '" + text + "': expected " + expected);
+  throw InputError(what + ": '" + excerpt(text) + "': expected " + expected);
 }
 
 std::uint64_t parse_digits(const std::string& digits, const std::string& what, const std::string& text,

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <iterator>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <set>
@@ -186,16 +188,36 @@ std::string gnuplot_terminal(const std::string& path, int width, int height) {
   return (extension == ".png" ? "set terminal pngcairo" : "set terminal svg") + size;
 }
 
+namespace {
+
+// gnuplot exits 0 when its output file could not be written whole (a full disk): a plot counts
+// as written only when it ends as its format ends (PNG's IEND chunk, SVG's closing tag).
+bool plot_is_whole(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  static const std::string png_end("\0\0\0\0IEND\xAE\x42\x60\x82", 12);
+  if (bytes.starts_with("\x89PNG")) return bytes.ends_with(png_end);
+  const std::size_t end = bytes.rfind("</svg>");
+  return end != std::string::npos && bytes.find_first_not_of(" \r\n", end + 6) == std::string::npos;
+}
+
+}  // namespace
+
 void run_gnuplot(const std::string& path, const std::string& script, const std::string& plot) {
+  // gnuplot writes a PNG it cannot open on its stdout: never let it get that far.
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  if (!folder.empty() && !std::filesystem::is_directory(folder))
+    throw InputError("--plot " + path + ": folder " + folder.string() + " does not exist");
   write_via_temporary(path, [&](const std::filesystem::path& temporary) {
     const std::string full = script + "set output '" + temporary.string() + "'\n" + plot + "\nunset output\n";
-    // gnuplot talks on stderr only, never into a table on stdout.
-    FILE* gnuplot = popen("gnuplot 1>&2", "w");
+    // gnuplot's messages go to stderr; its stdout (nothing, or image bytes) never reaches ours.
+    FILE* gnuplot = popen("gnuplot >/dev/null", "w");
     if (!gnuplot) throw InputError("--plot: cannot run gnuplot (install gnuplot-nox)");
     std::fwrite(full.data(), 1, full.size(), gnuplot);
     const int status = pclose(gnuplot);
     if (status != 0 || !std::filesystem::exists(temporary) || std::filesystem::file_size(temporary) == 0)
       throw InputError("--plot " + path + ": gnuplot failed (exit status " + std::to_string(status) + ")");
+    if (!plot_is_whole(temporary)) throw InputError("--plot " + path + ": write failed (disk full?): the plot is cut short");
   });
 }
 

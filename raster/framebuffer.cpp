@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <vector>
 #include <memory>
 
 #include <OpenImageIO/imageio.h>
@@ -56,7 +57,13 @@ void write_image(const std::string& path, const OIIO::ImageSpec& spec, const voi
     auto out = OIIO::ImageOutput::create(format.empty() ? std::string("png") : format);
     if (!out) throw InputError(path + ": cannot write images of this type (" + OIIO::geterror() + ")");
     if (!out->open(temporary.string(), spec) || !out->write_image(spec.format, pixels) || !out->close())
-      throw InputError(path + ": " + out->geterror());
+      throw InputError(path + ": write failed: " + out->geterror());
+    // Image libraries do not all report a failed fwrite (a full disk gave a truncated PNG and
+    // exit 0): the file counts as written only when it reads back whole.
+    auto in = OIIO::ImageInput::open(temporary.string());
+    std::vector<unsigned char> check(spec.image_bytes());
+    if (!in || !in->read_image(0, 0, 0, spec.nchannels, spec.format, check.data()))
+      throw InputError(path + ": write failed (disk full?): the image does not read back whole");
   });
 }
 

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <span>
 
 #include "traces/sink.h"
@@ -23,7 +24,15 @@ class FramebufferRecorder {
       : sink_(sink && sink->wants_framebuffer_events() ? sink : nullptr) {}
   FramebufferRecorder(const FramebufferRecorder&) = delete;
   FramebufferRecorder& operator=(const FramebufferRecorder&) = delete;
-  ~FramebufferRecorder() { flush(); }
+  // Destructors must not throw: while an error unwinds (a sink's write failed) the records are
+  // dropped; a sink that fails here reports the failure again from its finish().
+  ~FramebufferRecorder() {
+    if (std::uncaught_exceptions() > 0) return;
+    try {
+      flush();
+    } catch (...) {
+    }
+  }
 
   bool active() const { return sink_ != nullptr; }
   void record(FramebufferOp op, int quad_x, int quad_y, unsigned mask, std::uint32_t triangle) {

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <span>
 
 #include "traces/sink.h"
@@ -28,7 +29,15 @@ class TexelRecorder {
   explicit TexelRecorder(EventSink* sink = nullptr) : sink_(sink) {}
   TexelRecorder(const TexelRecorder&) = delete;
   TexelRecorder& operator=(const TexelRecorder&) = delete;
-  ~TexelRecorder() { flush(); }
+  // Destructors must not throw: while an error unwinds (a sink's write failed) the records are
+  // dropped; a sink that fails here reports the failure again from its finish().
+  ~TexelRecorder() {
+    if (std::uncaught_exceptions() > 0) return;
+    try {
+      flush();
+    } catch (...) {
+    }
+  }
 
   void record(const TexelSite& site, unsigned level, int x, int y) {
     ++reads_;

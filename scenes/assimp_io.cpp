@@ -2,8 +2,17 @@
 // transforms baked in (aiProcess_PreTransformVertices), identical vertices joined
 // (aiProcess_JoinIdenticalVertices), polygons triangulated, points and lines dropped. Meshes are
 // appended in assimp's order; each keeps its material as the per-face material.
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
+#include <new>
 #include <string>
 
 #include <assimp/postprocess.h>
@@ -11,6 +20,7 @@
 #include <assimp/Importer.hpp>
 
 #include "core/error.h"
+#include "core/input_guard.h"
 #include "scenes/mesh_io.h"
 
 namespace rastrace {
@@ -56,17 +66,66 @@ void read_texture(const std::string& path, const aiScene& scene, const aiMateria
   material.texture_source.path = resolved.string();
 }
 
+constexpr unsigned kAssimpFlags = aiProcess_JoinIdenticalVertices | aiProcess_Triangulate | aiProcess_SortByPType |
+                                  aiProcess_PreTransformVertices | aiProcess_ValidateDataStructure;
+constexpr rlim_t kAssimpCpuSeconds = 120;
+constexpr rlim_t kAssimpMemoryBytes = rlim_t{4} << 30;
+
+const aiScene* read_with_assimp(Assimp::Importer& importer, const std::string& path) {
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  return importer.ReadFile(path, kAssimpFlags);
+}
+
+// libassimp crashes on some damaged files (an ASE model with one byte changed: signal 11) and
+// runs away on others (a mutated COLLADA file: 1.8 GB). It reads the file first in a child
+// process limited in CPU time and address space; only a file the child read without crashing is
+// read again in this process. A crash or a limit becomes an InputError naming the file.
+void read_in_contained_child(const std::string& path) {
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if (pid < 0) return;  // no child: read in this process, uncontained
+  if (pid == 0) {
+    const rlimit cpu{kAssimpCpuSeconds, kAssimpCpuSeconds};
+    ::setrlimit(RLIMIT_CPU, &cpu);
+#if !defined(__SANITIZE_ADDRESS__)  // AddressSanitizer reserves terabytes of address space
+    const rlimit memory{kAssimpMemoryBytes, kAssimpMemoryBytes};
+    ::setrlimit(RLIMIT_AS, &memory);
+#endif
+    try {
+      Assimp::Importer importer;
+      read_with_assimp(importer, path);
+    } catch (const std::bad_alloc&) {
+      ::_exit(3);
+    } catch (...) {
+      ::_exit(4);
+    }
+    ::_exit(0);  // read or refused: this process reads it again and reports assimp's error
+  }
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) return;
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 3)
+    throw_in_file(path, "assimp needs more than " + std::to_string(kAssimpMemoryBytes >> 30) +
+                            " GiB reading it: refused as damaged or hostile");
+  if (WIFSIGNALED(status) && (WTERMSIG(status) == SIGXCPU || WTERMSIG(status) == SIGKILL))
+    throw_in_file(path, "assimp took more than " + std::to_string(kAssimpCpuSeconds) +
+                            " s of CPU reading it: refused as damaged or hostile");
+  if (WIFSIGNALED(status))
+    throw_in_file(path, "assimp crashed reading it (signal " + std::to_string(WTERMSIG(status)) + ", " +
+                            ::strsignal(WTERMSIG(status)) + "): the file is damaged or not what its extension says");
+  // A sanitizer's crash handler turns the signal into an exit status.
+  throw_in_file(path, "assimp crashed reading it (exit status " + std::to_string(WEXITSTATUS(status)) +
+                          "): the file is damaged or not what its extension says");
+}
+
 }  // namespace
 
 Mesh load_with_assimp(const std::string& path) {
-  std::error_code error;
-  if (!fs::exists(path, error)) throw_in_file(path, "no such file");
-  if (fs::is_directory(path, error)) throw_in_file(path, "is a directory, expected a file");
+  require_regular_file(path);
+  read_in_contained_child(path);
   Assimp::Importer importer;
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene =
-      importer.ReadFile(path, aiProcess_JoinIdenticalVertices | aiProcess_Triangulate | aiProcess_SortByPType |
-                                  aiProcess_PreTransformVertices | aiProcess_ValidateDataStructure);
+  const aiScene* scene = read_with_assimp(importer, path);
   if (!scene) throw_in_file(path, std::string("assimp cannot read it: ") + importer.GetErrorString());
   if (scene->mNumMeshes == 0) throw_in_file(path, "no triangle meshes in the file");
 

@@ -127,7 +127,7 @@ std::int64_t resolve_index(TextLines& lines, std::string_view token, std::size_t
     lines.fail(std::string("expected a ") + kind + " index, found " + describe_token(token));
   const auto count = static_cast<std::int64_t>(defined);
   if (index > 0 && index <= count) return index - 1;
-  if (index < 0 && -index <= count) return count + index;
+  if (index < 0 && index >= -count) return count + index;  // not -index: INT64_MIN has no negation
   if (index == 0) lines.fail(std::string(kind) + " index 0: OBJ indices start at 1 (or count back from -1)");
   lines.fail(std::string(kind) + " index " + std::to_string(index) + " out of range: " + std::to_string(count) + " " +
              (count == 1 ? kind : kinds) + " defined so far");
@@ -137,6 +137,10 @@ std::int64_t resolve_index(TextLines& lines, std::string_view token, std::size_t
 
 Mesh load_obj(const std::string& path) {
   const std::string text = read_whole_file(path);
+  // OBJ is text: a NUL byte means UTF-16 or binary data, whose lines would all be skipped as
+  // unknown statements and load as an empty mesh.
+  if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
+    throw_at_byte(path, nul, "NUL byte: expected OBJ text (ASCII or UTF-8), not UTF-16 or binary data");
   TextLines lines(path, text);
   const fs::path folder = fs::path(path).parent_path();
 
@@ -214,6 +218,8 @@ Mesh load_obj(const std::string& path) {
     }
   }
 
+  if (corners.empty())
+    throw_in_file(path, "no faces: expected an OBJ mesh with at least one 'f' statement");
   Mesh mesh;
   mesh.name = path;
   // Lockstep files (each corner's vt and vn equal to its v, or absent throughout) keep v order.

@@ -1,6 +1,7 @@
 // Scenes from JSON files (format in docs/scene-format.md), from plain mesh files, or built in.
 #include "scenes/scene_io.h"
 
+#include <cfloat>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/input_guard.h"
 #include "scenes/bounding_box.h"
 #include "scenes/builtin_scenes.h"
 #include "scenes/mesh_io.h"
@@ -67,6 +69,8 @@ class SceneReader {
     throw_in_file(file_, where + ": expected " + expected);
   }
   static std::string kind(const json& value) { return value.is_null() ? "null" : value.type_name(); }
+  // A value as the error quotes it: its JSON, cut to a short prefix (a value may be megabytes).
+  static std::string shown(const json& value) { return excerpt(value.dump(), 40); }
   void expect_object(const json& value, const std::string& where) const {
     if (!value.is_object()) fail(where, "an object, found " + kind(value));
   }
@@ -78,7 +82,7 @@ class SceneReader {
         known |= key == k;
         list += list.empty() ? k : std::string(", ") + k;
       }
-      if (!known) fail(where + "." + key, "no such key; known keys here: " + list);
+      if (!known) fail(where + "." + excerpt(key), "no such key; known keys here: " + list);
     }
   }
   const json& required(const json& value, const std::string& where, const char* key) const {
@@ -92,26 +96,28 @@ class SceneReader {
   double number(const json& value, const std::string& where) const {
     if (!value.is_number()) fail(where, "a number, found " + kind(value));
     const double d = value.get<double>();
-    if (!std::isfinite(d)) fail(where, "a finite number");
+    // Every scene number ends up a float: 1e300 would silently become infinity.
+    if (!std::isfinite(d) || std::fabs(d) > static_cast<double>(FLT_MAX))
+      fail(where, "a finite number within float range (magnitude at most 3.4e38)");
     return d;
   }
   int integer(const json& value, const std::string& where, int lo, int hi) const {
     if (!value.is_number_integer() || value.get<std::int64_t>() < lo || value.get<std::int64_t>() > hi)
-      fail(where, "an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", found " + value.dump());
+      fail(where, "an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", found " + shown(value));
     return static_cast<int>(value.get<std::int64_t>());
   }
   glm::vec3 vec3(const json& value, const std::string& where) const {
-    if (!value.is_array() || value.size() != 3) fail(where, "an array of 3 numbers, found " + value.dump());
+    if (!value.is_array() || value.size() != 3) fail(where, "an array of 3 numbers, found " + shown(value));
     return {number(value[0], where + "[0]"), number(value[1], where + "[1]"), number(value[2], where + "[2]")};
   }
   glm::vec4 colour(const json& value, const std::string& where) const {
     if (!value.is_array() || (value.size() != 3 && value.size() != 4))
-      fail(where, "a colour [r, g, b] or [r, g, b, a] with components in 0..1, found " + value.dump());
+      fail(where, "a colour [r, g, b] or [r, g, b, a] with components in 0..1, found " + shown(value));
     glm::vec4 c(1.0f);
     for (std::size_t i = 0; i < value.size(); ++i) {
       const double x = number(value[i], where + "[" + std::to_string(i) + "]");
       if (x < 0.0 || x > 1.0)
-        fail(where + "[" + std::to_string(i) + "]", "a colour component in 0..1, found " + value[i].dump());
+        fail(where + "[" + std::to_string(i) + "]", "a colour component in 0..1, found " + shown(value[i]));
       c[static_cast<int>(i)] = static_cast<float>(x);
     }
     return c;
@@ -122,14 +128,14 @@ class SceneReader {
     const std::string name = string(value, where);
     const fs::path path(name);
     if (path.is_absolute()) {
-      if (!fs::exists(path)) fail(where, "an existing file; " + name + " not found");
+      if (!fs::exists(path)) fail(where, "an existing file; " + excerpt(name, 200) + " not found");
       return name;
     }
     const fs::path beside = folder_ / path;
     if (fs::exists(beside)) return beside.string();
     const fs::path in_data = fs::path(data_directory()) / path;
     if (fs::exists(in_data)) return in_data.string();
-    fail(where, "an existing file; \"" + name + "\" found neither in " +
+    fail(where, "an existing file; \"" + excerpt(name, 200) + "\" found neither in " +
                     (folder_.empty() ? std::string(".") : folder_.string()) + " nor in the data folder " +
                     data_directory());
   }
@@ -168,7 +174,7 @@ class SceneReader {
       if (!(repeat > 0.0f)) fail(where + ".repeat", "a positive number");
       return make_plane(get("segments", 1, 1, 4096), repeat);
     }
-    fail(where + ".procedural", "\"grid\", \"icosphere\" or \"plane\", found \"" + name + "\"");
+    fail(where + ".procedural", "\"grid\", \"icosphere\" or \"plane\", found \"" + excerpt(name) + "\"");
   }
 
   glm::mat4 transform(const json& value, const std::string& where) const {
@@ -222,7 +228,7 @@ class SceneReader {
     else if (name == "gradient")
       source.kind = TextureSource::Kind::Gradient;
     else
-      fail(where + ".procedural", "\"checker\", \"four_colour\" or \"gradient\", found \"" + name + "\"");
+      fail(where + ".procedural", "\"checker\", \"four_colour\" or \"gradient\", found \"" + excerpt(name) + "\"");
     if (value.contains("size")) source.size = integer(value["size"], where + ".size", 1, 16384);
     if (value.contains("checks")) source.checks = integer(value["checks"], where + ".checks", 1, source.size);
     return source;
@@ -252,7 +258,7 @@ class SceneReader {
         project_uvs_planar(result.mesh, 2);
       else
         fail(where + ".uv_projection",
-             "\"spherical\", \"planar_x\", \"planar_y\" or \"planar_z\", found \"" + projection + "\"");
+             "\"spherical\", \"planar_x\", \"planar_y\" or \"planar_z\", found \"" + excerpt(projection) + "\"");
     }
     if (value.contains("transform")) result.transform = transform(value["transform"], where + ".transform");
     if (value.contains("material")) {
@@ -277,11 +283,59 @@ class SceneReader {
   fs::path folder_;
 };
 
+// Line of byte `offset` in `text` (1-based).
+std::uint64_t line_of(const std::string& text, std::size_t offset) {
+  std::uint64_t line = 1;
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i) line += text[i] == '\n';
+  return line;
+}
+
+// Scenes nest 5 levels deep; a limit far above that keeps recursive code (dump, destruction,
+// the reader) off the stack's edge for documents with 10^5 nested brackets.
+constexpr int kMaxJsonDepth = 64;
+
+// Refuses nesting deeper than kMaxJsonDepth before the document is parsed. Brackets inside
+// strings and comments do not count.
+void check_json_depth(const std::string& text, const std::string& path) {
+  int depth = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '"') {
+      for (++i; i < text.size() && text[i] != '"'; ++i)
+        if (text[i] == '\\') ++i;
+    } else if (c == '/' && i + 1 < text.size() && text[i + 1] == '/') {
+      while (i < text.size() && text[i] != '\n') ++i;
+    } else if (c == '/' && i + 1 < text.size() && text[i + 1] == '*') {
+      const std::size_t end = text.find("*/", i + 2);
+      i = end == std::string::npos ? text.size() : end + 1;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonDepth)
+        throw_at_line(path, line_of(text, i),
+                      "JSON nested deeper than " + std::to_string(kMaxJsonDepth) + " levels of [ and {");
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+}
+
 Scene load_json_scene(const std::string& path) {
   const std::string text = read_whole_file(path);
+  check_json_depth(text, path);
   json root;
   try {
     root = json::parse(text, nullptr, true, true);
+  } catch (const json::out_of_range& e) {
+    // A number beyond double range (1e400): the library names the token but no place.
+    std::string message = e.what();
+    const std::size_t quote = message.find('\'');
+    std::uint64_t line = 1;
+    if (quote != std::string::npos) {
+      const std::string token = message.substr(quote + 1, message.rfind('\'') - quote - 1);
+      const std::size_t at = token.empty() ? std::string::npos : text.find(token);
+      if (at != std::string::npos) line = line_of(text, at);
+      message = "number " + excerpt(token) + " beyond the range of a double";
+    }
+    throw_at_line(path, line, "invalid JSON: " + message);
   } catch (const json::parse_error& e) {
     // Report the line and column of the byte where parsing stopped.
     const std::size_t byte = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
@@ -295,7 +349,7 @@ Scene load_json_scene(const std::string& path) {
     std::string message = e.what();
     const std::size_t colon = message.find(": ", message.find("parse error"));
     if (colon != std::string::npos) message = message.substr(colon + 2);
-    throw_at_line(path, line, "column " + std::to_string(column) + ": invalid JSON: " + message);
+    throw_at_line(path, line, "column " + std::to_string(column) + ": invalid JSON: " + excerpt(message, 200));
   }
   Scene scene = SceneReader(path).read(root);
   load_scene_textures(scene);
@@ -328,6 +382,7 @@ Camera frame_bounds(const glm::vec3& lo, const glm::vec3& hi, float aspect) {
 
 void load_scene_textures(Scene& scene) {
   std::map<std::tuple<int, std::string, int, int>, int> loaded;
+  std::uint64_t procedural_bytes = 0;
   for (SceneObject& object : scene.objects)
     for (Material& material : object.mesh.materials) {
       const TextureSource& source = material.texture_source;
@@ -338,6 +393,11 @@ void load_scene_textures(Scene& scene) {
       const auto key = std::make_tuple(static_cast<int>(source.kind), source.path, source.size, source.checks);
       auto it = loaded.find(key);
       if (it == loaded.end()) {
+        if (source.kind != TextureSource::Kind::File) {
+          // RGBA8 texels and a mip chain (4/3 of the base level), summed over the scene's textures.
+          procedural_bytes += std::uint64_t(source.size) * std::uint64_t(source.size) * 4 * 4 / 3;
+          checked_bytes(procedural_bytes, 1, scene.name + ": procedural textures");
+        }
         scene.textures.push_back(load_texture(source));
         it = loaded.emplace(key, static_cast<int>(scene.textures.size()) - 1).first;
       }

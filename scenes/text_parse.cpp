@@ -9,14 +9,12 @@
 #include <type_traits>
 
 #include "core/error.h"
+#include "core/input_guard.h"
 
 namespace rastrace {
 
 std::string read_whole_file(const std::string& path) {
-  std::error_code error;
-  const auto status = std::filesystem::status(path, error);
-  if (!std::filesystem::exists(status)) throw_in_file(path, "no such file");
-  if (std::filesystem::is_directory(status)) throw_in_file(path, "is a directory, expected a file");
+  require_regular_file(path);  // a FIFO or /dev/zero would block or never end
   std::ifstream in(path, std::ios::binary);
   if (!in) throw_in_file(path, "cannot open for reading (permission denied?)");
   std::string data;

@@ -5,13 +5,15 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "core/input_guard.h"
 #include "core/progress.h"
 #include "traces/text_formats.h"
 
 namespace rastrace {
 
 TraceFileFormat detect_trace_format(const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw_in_file(path, "no such trace file");
+  if (!std::filesystem::exists(path)) throw_in_file(path, "no such trace file");
+  require_regular_file(path);  // a FIFO or device would block or never end
   if (TraceReader::is_trace_file(path)) return TraceFileFormat::Container;
   std::string extension = std::filesystem::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/input_guard.h"
 
 namespace rastrace {
 
@@ -91,6 +92,7 @@ void export_csv(TraceReader& reader, std::ostream& out) {
 }
 
 TraceMetadata read_csv_metadata(const std::string& path) {
+  require_regular_file(path);
   std::ifstream in(path);
   if (!in) throw_in_file(path, "cannot open for reading");
   std::string line;
@@ -101,6 +103,7 @@ TraceMetadata read_csv_metadata(const std::string& path) {
 }
 
 void import_csv(const std::string& path, EventSink& sink) {
+  require_regular_file(path);
   std::ifstream in(path);
   if (!in) throw_in_file(path, "cannot open for reading");
   std::vector<VertexFetch> vertices;
@@ -200,6 +203,7 @@ void import_csv(const std::string& path, EventSink& sink) {
 }
 
 std::uint64_t import_din(const std::string& path, EventSink& sink) {
+  require_regular_file(path);
   std::ifstream in(path);
   if (!in) throw_in_file(path, "cannot open for reading");
   std::vector<AddressAccess> batch;

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <fstream>
 #include <mutex>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include <zstd.h>
 
 #include "core/error.h"
+#include "core/input_guard.h"
 #include "core/progress.h"
 #include "traces/crc32c.h"
 
@@ -65,8 +67,18 @@ struct TraceLayout {
   std::uint64_t index_offset;
 };
 
-// Reads, checks and decodes chunk i into `out`; throws the chunk's InputError.
-void load_chunk(const TraceLayout& file, ChunkSource& src, std::size_t i, DecodedChunk& out) {
+// What a chunk's header says, once read_checked_payload() has checked it.
+struct ChunkHeader {
+  std::uint8_t flags = 0;
+  std::uint32_t records = 0;
+  std::uint32_t stored = 0;
+  std::uint32_t raw_bytes = 0;
+  std::uint64_t first = 0;
+};
+
+// Reads chunk i's header and payload into src.stored and checks the checksum, the reserved bytes
+// and the agreement with the index (no decoding); throws the chunk's InputError.
+ChunkHeader read_checked_payload(const TraceLayout& file, ChunkSource& src, std::size_t i) {
   const std::string& path = file.path;
   const ChunkInfo& info = file.chunks[i];
   const std::string where = "chunk " + std::to_string(i) + ": ";
@@ -78,6 +90,9 @@ void load_chunk(const TraceLayout& file, ChunkSource& src, std::size_t i, Decode
   if (load<std::uint32_t>(h) != kChunkTag) throw_at_byte(path, info.offset, where + "bad chunk tag, expected 'CHNK'");
   const std::uint8_t kind = h[4];
   const std::uint8_t flags = h[5];
+  if (h[6] != 0 || h[7] != 0) throw_at_byte(path, info.offset + 6, where + "reserved header bytes are not zero");
+  if ((flags & ~(kChunkStartsDraw | kChunkEndsDraw)) != 0)
+    throw_at_byte(path, info.offset + 5, where + "unknown flags " + hex(flags));
   const std::uint32_t records = load<std::uint32_t>(h + 8);
   const std::uint32_t stored = load<std::uint32_t>(h + 12);
   const std::uint32_t raw_bytes = load<std::uint32_t>(h + 16);
@@ -98,6 +113,15 @@ void load_chunk(const TraceLayout& file, ChunkSource& src, std::size_t i, Decode
   // Every encoding uses at most 8 bytes per field: a larger claim is corruption, not a big chunk.
   if (raw_bytes > std::uint64_t{records} * 64 + 4096)
     throw_at_byte(path, info.offset, where + "implausible decoded size");
+  return {flags, records, stored, raw_bytes, first};
+}
+
+// Reads, checks and decodes chunk i into `out`; throws the chunk's InputError.
+void load_chunk(const TraceLayout& file, ChunkSource& src, std::size_t i, DecodedChunk& out) {
+  const std::string& path = file.path;
+  const ChunkInfo& info = file.chunks[i];
+  const std::string where = "chunk " + std::to_string(i) + ": ";
+  const auto [flags, records, stored, raw_bytes, first] = read_checked_payload(file, src, i);
   src.raw.resize(raw_bytes);
   const std::size_t got = ZSTD_decompressDCtx(src.dctx, src.raw.data(), src.raw.size(), src.stored.data(), stored);
   if (ZSTD_isError(got) || got != raw_bytes)
@@ -242,6 +266,8 @@ struct TraceReader::ReadState {
 };
 
 bool TraceReader::is_trace_file(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) return false;  // the reader that follows says why
   std::ifstream in(path, std::ios::binary);
   char magic[8] = {};
   in.read(magic, 8);
@@ -249,6 +275,7 @@ bool TraceReader::is_trace_file(const std::string& path) {
 }
 
 TraceReader::TraceReader(const std::string& path) : path_(path) {
+  require_regular_file(path);  // a FIFO would block, /dev/zero never end
   std::ifstream in_(path, std::ios::binary);
   if (!in_) throw_in_file(path, "cannot open for reading");
   in_.seekg(0, std::ios::end);
@@ -298,6 +325,8 @@ TraceReader::TraceReader(const std::string& path) : path_(path) {
   if (std::memcmp(footer + 16, kTraceEndMagic, 8) != 0) fail_truncated(in_, header_end);
   index_offset_ = load<std::uint64_t>(footer);
   const std::uint32_t index_crc = load<std::uint32_t>(footer + 8);
+  if (load<std::uint32_t>(footer + 12) != 0)
+    throw_at_byte(path, file_bytes_ - kFooterBytes + 12, "reserved footer bytes are not zero");
   if (index_offset_ < header_end || index_offset_ + 16 > file_bytes_ - kFooterBytes)
     throw_at_byte(path, file_bytes_ - kFooterBytes,
                   "chunk index offset " + std::to_string(index_offset_) + " outside the file");
@@ -307,8 +336,8 @@ TraceReader::TraceReader(const std::string& path) : path_(path) {
   if (crc32c(index.data(), index.size()) != index_crc)
     throw_at_byte(path, index_offset_, "chunk index checksum mismatch");
   const std::uint64_t count = index.size() >= 16 ? load<std::uint64_t>(index.data() + 8) : 0;
-  if (index.size() < 16 || load<std::uint32_t>(index.data()) != kIndexTag || count > index.size() / 24 ||
-      index.size() != 16 + count * 24)
+  if (index.size() < 16 || load<std::uint32_t>(index.data()) != kIndexTag ||
+      load<std::uint32_t>(index.data() + 4) != 0 || count > index.size() / 24 || index.size() != 16 + count * 24)
     throw_at_byte(path, index_offset_, "malformed chunk index");
   std::uint64_t previous_end = header_end;
   for (std::uint64_t i = 0; i < count; ++i) {
@@ -318,6 +347,9 @@ TraceReader::TraceReader(const std::string& path) : path_(path) {
     c.first_record = load<std::uint64_t>(e + 8);
     c.records = load<std::uint32_t>(e + 16);
     const std::uint8_t kind = e[20];
+    if (e[21] != 0 || e[22] != 0 || e[23] != 0)
+      throw_at_byte(path, index_offset_ + 16 + i * 24 + 21,
+                    "chunk index entry " + std::to_string(i) + ": reserved bytes are not zero");
     if (kind < 1 || kind > last_kind || c.records > kMaxChunkRecords || c.offset < previous_end ||
         c.offset + kChunkHeaderBytes > index_offset_)
       throw_at_byte(path, index_offset_ + 16 + i * 24, "chunk index entry " + std::to_string(i) + " is invalid");
@@ -335,6 +367,27 @@ TraceReader::TraceReader(const std::string& path) : path_(path) {
 
 TraceReader::~TraceReader() = default;
 
+void TraceReader::fail_if_trailing_data(std::ifstream& in_, std::uint64_t index_offset, std::size_t chunk,
+                                        const std::uint8_t* index_header) {
+  // The walk reached a chunk index: if a whole footer follows it, the file was finished and
+  // something was appended after it (not a truncation).
+  const std::uint64_t count = load<std::uint64_t>(index_header + 8);
+  if (count > file_bytes_ / 24) return;
+  const std::uint64_t footer_at = index_offset + 16 + count * 24;
+  if (footer_at + kFooterBytes == file_bytes_)  // the file ends where its footer should
+    throw_at_byte(path_, footer_at + 16, "damaged footer: the end magic is not 'RTRCEND1'");
+  if (footer_at + kFooterBytes > file_bytes_) return;
+  std::uint8_t footer[kFooterBytes];
+  in_.clear();
+  in_.seekg(static_cast<std::streamoff>(footer_at));
+  in_.read(reinterpret_cast<char*>(footer), kFooterBytes);
+  if (!in_ || std::memcmp(footer + 16, kTraceEndMagic, 8) != 0 || load<std::uint64_t>(footer) != index_offset) return;
+  const std::uint64_t end = footer_at + kFooterBytes;
+  throw_at_byte(path_, end,
+                "trailing data: " + std::to_string(file_bytes_ - end) + " bytes after the trace's footer (the trace of " +
+                    std::to_string(chunk) + " chunks ends at byte " + std::to_string(end) + ")");
+}
+
 void TraceReader::fail_truncated(std::ifstream& in_, std::uint64_t header_end) {
   // Walk the chunks from the start to say where the file stops.
   std::uint64_t offset = header_end;
@@ -344,6 +397,7 @@ void TraceReader::fail_truncated(std::ifstream& in_, std::uint64_t header_end) {
     std::uint8_t h[kChunkHeaderBytes];
     in_.seekg(static_cast<std::streamoff>(offset));
     in_.read(reinterpret_cast<char*>(h), kChunkHeaderBytes);
+    if (load<std::uint32_t>(h) == kIndexTag) fail_if_trailing_data(in_, offset, chunk, h);
     if (load<std::uint32_t>(h) != kChunkTag) break;
     const std::uint64_t end = offset + kChunkHeaderBytes + load<std::uint32_t>(h + 12);
     if (end > file_bytes_)
@@ -448,6 +502,14 @@ const DecodedChunk& TraceReader::read_chunk(std::size_t i) {
   return slot->decoded;
 }
 
+void TraceReader::check_chunk(std::size_t i) {
+  if (i >= chunks_.size())
+    throw std::out_of_range("TraceReader::check_chunk: chunk " + std::to_string(i) + " of " +
+                            std::to_string(chunks_.size()));
+  // The caller's stream belongs to the caller's thread; the read-ahead thread has its own.
+  read_checked_payload(TraceLayout{path_, chunks_, index_offset_}, state_->caller, i);
+}
+
 void replay_trace(TraceReader& reader, EventSink& sink, ReplayKinds kinds, Progress* progress) {
   reader.set_read_ahead_kinds(kinds);
   for (std::size_t i = 0; i < reader.chunks().size(); ++i) {
@@ -456,7 +518,10 @@ void replay_trace(TraceReader& reader, EventSink& sink, ReplayKinds kinds, Progr
                         (info.kind == RecordKind::Texel && kinds.texels) ||
                         (info.kind == RecordKind::Address && kinds.addresses) ||
                         (info.kind == RecordKind::Framebuffer && kinds.framebuffer);
-    if (!wanted) continue;
+    if (!wanted) {
+      reader.check_chunk(i);  // not needed, but a damaged file must not pass as sound
+      continue;
+    }
     const DecodedChunk& chunk = reader.read_chunk(i);
     switch (chunk.kind) {
       case RecordKind::Vertex:
@@ -477,6 +542,16 @@ void replay_trace(TraceReader& reader, EventSink& sink, ReplayKinds kinds, Progr
     if (progress) progress->advance(info.records);
   }
   sink.finish();
+}
+
+std::uint64_t verify_trace(TraceReader& reader) {
+  reader.set_read_ahead_kinds({});
+  std::uint64_t records = 0;
+  for (std::size_t i = 0; i < reader.chunks().size(); ++i) {
+    reader.read_chunk(i);
+    records += reader.chunks()[i].records;
+  }
+  return records;
 }
 
 bool VertexTraceReader::next(VertexBatch& batch) {

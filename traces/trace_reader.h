@@ -63,6 +63,9 @@ class TraceReader {
   // Reads, checks and decodes chunk i. The result stays valid until the next call. Any order
   // works and gives the same records; a chunk's error is thrown by the call for that chunk.
   const DecodedChunk& read_chunk(std::size_t i);
+  // Reads chunk i and checks its checksum, reserved bytes and agreement with the index without
+  // decoding it (for chunks a caller skips); throws the chunk's InputError.
+  void check_chunk(std::size_t i);
 
   // Read-ahead. Once chunks are read in file order (chunk i, then the next chunk of the kinds
   // below), a second thread with its own stream and zstd context reads, checks and decodes the
@@ -81,6 +84,8 @@ class TraceReader {
  private:
   struct ReadState;  // decoding buffers, read-ahead slots and thread (trace_reader.cpp)
   [[noreturn]] void fail_truncated(std::ifstream& in, std::uint64_t header_end);
+  void fail_if_trailing_data(std::ifstream& in, std::uint64_t index_offset, std::size_t chunk,
+                             const std::uint8_t* index_header);
 
   std::string path_;
   std::uint64_t file_bytes_ = 0;
@@ -92,9 +97,14 @@ class TraceReader {
   std::unique_ptr<ReadState> state_;
 };
 
-// Feeds every chunk of the file into the sink, in file order, then calls sink.finish().
+// Feeds every chunk of the file into the sink, in file order, then calls sink.finish(). Chunks
+// of kinds not asked for are still checked (check_chunk), so a damaged file never passes.
 // Progress (when given) advances by records.
 void replay_trace(TraceReader& reader, EventSink& sink, ReplayKinds kinds = {}, Progress* progress = nullptr);
+
+// Reads, checks and decodes every chunk (checksums, reserved bytes, index agreement, records);
+// returns the records read. Throws the first damaged chunk's InputError (chunk and byte offset).
+std::uint64_t verify_trace(TraceReader& reader);
 
 struct VertexBatch {
   DrawInfo draw;

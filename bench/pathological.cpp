@@ -1,0 +1,73 @@
+// Every ordering and the adjacency builder on the generated pathological meshes
+// (tests/support/pathological_meshes.h: degenerate faces, duplicates, few vertices, edge and
+// vertex fans) against a well-formed grid of the same face count. The counter x_grid is the
+// time over the same algorithm's time on the grid (goal: at most 10).
+//   build/bench/bench_pathological --benchmark_min_time=0.05
+#include <chrono>
+#include <map>
+#include <string>
+
+#include <benchmark/benchmark.h>
+
+#include "core/error.h"
+#include "reorder/adjacency/build.h"
+#include "reorder/ordering.h"
+#include "tests/support/pathological_meshes.h"
+
+namespace rastrace {
+namespace {
+
+constexpr std::uint32_t kFaces = 3000;
+
+std::map<std::string, double>& grid_seconds() {
+  static std::map<std::string, double> seconds;
+  return seconds;
+}
+
+template <typename Run>
+void measure(benchmark::State& state, const std::string& algorithm, const std::string& mesh, Run run) {
+  double total = 0;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    run();
+    total += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  const double mean = total / static_cast<double>(state.iterations());
+  if (mesh == "grid") grid_seconds()[algorithm] = mean;
+  const auto grid = grid_seconds().find(algorithm);
+  if (grid != grid_seconds().end() && grid->second > 0) state.counters["x_grid"] = mean / grid->second;
+}
+
+const bool registered = [] {
+  static const auto meshes = testing::pathological_meshes(kFaces);
+  for (const ReorderAlgorithm& algorithm : reorder_algorithms()) {
+    for (const auto& [name, mesh] : meshes) {
+      benchmark::RegisterBenchmark((algorithm.name + "/" + name).c_str(),
+                                   [&algorithm, &name = name, &mesh = mesh](benchmark::State& state) {
+                                     ReorderParams params;
+                                     params.time_budget_seconds = 0.5;
+                                     measure(state, algorithm.name, name, [&] {
+                                       try {
+                                         benchmark::DoNotOptimize(algorithm.run(mesh, params));
+                                       } catch (const InputError&) {
+                                         state.SkipWithError("refused (grid meshes only)");
+                                       }
+                                     });
+                                   })
+          ->Unit(benchmark::kMillisecond);
+    }
+  }
+  for (const auto& [name, mesh] : meshes)
+    benchmark::RegisterBenchmark(("adjacency-build/" + name).c_str(),
+                                 [&name = name, &mesh = mesh](benchmark::State& state) {
+                                   CoverParams params;
+                                   params.time_budget_seconds = 0.5;
+                                   measure(state, "adjacency-build", name,
+                                           [&] { benchmark::DoNotOptimize(build_adjacency_primitives(mesh, params)); });
+                                 })
+        ->Unit(benchmark::kMillisecond);
+  return true;
+}();
+
+}  // namespace
+}  // namespace rastrace
