@@ -60,7 +60,8 @@ void read_texture(const std::string& path, const aiScene& scene, const aiMateria
   if (name.starts_with("file://")) name = name.substr(7);
   fs::path resolved = fs::path(name).is_absolute() ? fs::path(name) : fs::path(path).parent_path() / name;
   resolved = resolved.lexically_normal();
-  if (!fs::is_regular_file(resolved))
+  std::error_code error;
+  if (!fs::is_regular_file(resolved, error))
     throw_in_file(path, "material '" + material.name + "': texture file " + resolved.string() + " not found");
   material.texture_source.kind = TextureSource::Kind::File;
   material.texture_source.path = resolved.string();

@@ -45,7 +45,8 @@ fs::path resolve_reference(const fs::path& folder, std::string_view rest) {
   for (char& c : name)
     if (c == '\\') c = '/';
   fs::path whole = folder / name;
-  if (fs::exists(whole)) return whole;
+  std::error_code error;  // a name the OS refuses (too long, ...) is a missing file, not a crash
+  if (fs::exists(whole, error)) return whole;
   std::string_view tokens = name;
   return folder / std::string(next_token(tokens));
 }
@@ -107,7 +108,8 @@ void load_mtl(const fs::path& path, std::vector<Material>& materials,
       for (char& c : name)
         if (c == '\\') c = '/';
       const fs::path texture = (folder / name).lexically_normal();
-      if (!fs::is_regular_file(texture))
+      std::error_code error;
+      if (!fs::is_regular_file(texture, error))
         lines.fail("map_Kd " + describe_token(file) + ": texture file " + texture.string() + " not found");
       current->texture_source.kind = TextureSource::Kind::File;
       current->texture_source.path = texture.string();
@@ -199,7 +201,8 @@ Mesh load_obj(const std::string& path) {
     } else if (keyword == "mtllib") {
       if (trim(rest).empty()) lines.fail("expected an MTL file name after 'mtllib'");
       const fs::path library = resolve_reference(folder, rest);
-      if (!fs::exists(library)) lines.fail("mtllib: material library " + library.string() + " not found");
+      std::error_code error;
+      if (!fs::exists(library, error)) lines.fail("mtllib: material library " + library.string() + " not found");
       load_mtl(library, materials, by_name);
       have_library = true;
     } else if (keyword == "usemtl") {

@@ -127,14 +127,15 @@ class SceneReader {
   std::string file_path(const json& value, const std::string& where) const {
     const std::string name = string(value, where);
     const fs::path path(name);
+    std::error_code error;  // a name the OS refuses (too long, ...) is a missing file, not a crash
     if (path.is_absolute()) {
-      if (!fs::exists(path)) fail(where, "an existing file; " + excerpt(name, 200) + " not found");
+      if (!fs::exists(path, error)) fail(where, "an existing file; " + excerpt(name, 200) + " not found");
       return name;
     }
     const fs::path beside = folder_ / path;
-    if (fs::exists(beside)) return beside.string();
+    if (fs::exists(beside, error)) return beside.string();
     const fs::path in_data = fs::path(data_directory()) / path;
-    if (fs::exists(in_data)) return in_data.string();
+    if (fs::exists(in_data, error)) return in_data.string();
     fail(where, "an existing file; \"" + excerpt(name, 200) + "\" found neither in " +
                     (folder_.empty() ? std::string(".") : folder_.string()) + " nor in the data folder " +
                     data_directory());

@@ -9,6 +9,7 @@ data="${RASTRACE_DATA:-$here/data}"
 
 packages=(
   cmake g++ make pkg-config
+  clang libclang-rt-14-dev  # the fuzz targets (scripts/fuzz.sh): clang 14 and libFuzzer
   libglm-dev              # math
   libopenimageio-dev      # image I/O and diffs
   openimageio-tools       # OpenImageIO's CMake package refers to its tools (iconvert)

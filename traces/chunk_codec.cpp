@@ -318,16 +318,18 @@ std::string decode_vertex_records(std::span<const std::uint8_t> raw, std::uint32
   draw.type = static_cast<PrimitiveType>(type);
   // Files written before the flag existed store every strip's restart index, 0xFFFFFFFF included.
   draw.restart_index = type == 1 && type_byte == type ? RestartIndex{restart} : kNoRestart;
-  out.resize(n);
-  VertexFetch* f = out.data();
+  // Allocate only once the bytes for n records are known to be there (the column, the bitmap):
+  // a damaged count must not cost gigabytes before the error.
   Column vertex;
   if (!open_column(c, n, 0xFFFFFFFFu, "vertex", vertex)) return c.error;
+  if (!c.take((n + 7) / 8, "primitive start bitmap")) return c.error;
+  out.resize(n);
+  VertexFetch* f = out.data();
   if (n > 0) {
     f[0].vertex = static_cast<std::uint32_t>(vertex.value);
     decode_range<VertexFetch, std::uint32_t, &VertexFetch::vertex>(vertex, f, 1, n);
   }
   if (std::string error = column_error(vertex); !error.empty()) return error;
-  if (!c.take((n + 7) / 8, "primitive start bitmap")) return c.error;
   for (std::size_t i = 0; i < n; ++i) f[i].primitive_start = (c.p[i / 8] >> (i % 8)) & 1;
   c.p += (n + 7) / 8;
   if (c.p != c.end) return "unexpected bytes after the records";
@@ -336,8 +338,6 @@ std::string decode_vertex_records(std::span<const std::uint8_t> raw, std::uint32
 
 std::string decode_texel_records(std::span<const std::uint8_t> raw, std::uint32_t n, std::vector<TexelAccess>& out) {
   Cursor c{raw.data(), raw.data() + raw.size(), {}};
-  out.resize(n);
-  TexelAccess* t = out.data();
   Column col[7];
   const std::uint64_t limits[7] = {0xFFFFFFFFu, 0xFFu, 0xFFFFFFFFu, 0xFFFFFFFFu, 0xFFFFu, 0xFFFFu, 0xFFFFFFFFu};
   const char* names[7] = {"texture", "level", "x", "y", "pixel x", "pixel y", "triangle"};
@@ -346,6 +346,9 @@ std::string decode_texel_records(std::span<const std::uint8_t> raw, std::uint32_
   int opened = 0;
   while (opened < 7 && open_column(c, n, limits[opened], names[opened], col[opened])) ++opened;
   const bool all = opened == 7;
+  if (opened == 0) return c.error;
+  out.resize(n);  // after the headers: their bytes are there (see decode_vertex_records)
+  TexelAccess* t = out.data();
   if (n > 0) {
     TexelAccess first{static_cast<std::uint32_t>(col[0].value), static_cast<std::uint8_t>(col[1].value),
                       static_cast<std::uint32_t>(col[2].value), static_cast<std::uint32_t>(col[3].value),
@@ -383,8 +386,6 @@ std::string decode_texel_records(std::span<const std::uint8_t> raw, std::uint32_
 std::string decode_framebuffer_records(std::span<const std::uint8_t> raw, std::uint32_t n,
                                        std::vector<FramebufferAccess>& out) {
   Cursor c{raw.data(), raw.data() + raw.size(), {}};
-  out.resize(n);
-  FramebufferAccess* f = out.data();
   Column col[5];
   // Range checks OR every value of a column, so limits are all-ones masks; the operation's
   // exact range (0..kFramebufferOps-1) is checked record by record below.
@@ -392,6 +393,8 @@ std::string decode_framebuffer_records(std::span<const std::uint8_t> raw, std::u
   const char* names[5] = {"x", "y", "operation", "mask", "triangle"};
   for (int k = 0; k < 5; ++k)
     if (!open_column(c, n, limits[k], names[k], col[k])) return c.error;
+  out.resize(n);  // after the headers: their bytes are there (see decode_vertex_records)
+  FramebufferAccess* f = out.data();
   if (n > 0) {
     f[0].x = static_cast<std::uint16_t>(col[0].value);
     f[0].y = static_cast<std::uint16_t>(col[1].value);
@@ -420,11 +423,11 @@ std::string decode_framebuffer_records(std::span<const std::uint8_t> raw, std::u
 std::string decode_address_records(std::span<const std::uint8_t> raw, std::uint32_t n,
                                    std::vector<AddressAccess>& out) {
   Cursor c{raw.data(), raw.data() + raw.size(), {}};
-  out.resize(n);
-  AddressAccess* a = out.data();
   Column address, label;
   if (!open_column(c, n, ~std::uint64_t{0}, "address", address)) return c.error;
   const bool both = open_column(c, n, 0xFFu, "label", label);
+  out.resize(n);  // after the headers: their bytes are there (see decode_vertex_records)
+  AddressAccess* a = out.data();
   if (n > 0) a[0] = {address.value, static_cast<std::uint8_t>(label.value)};
   for (std::size_t begin = 1; begin < n; begin += kBlock) {
     const std::size_t end = std::min<std::size_t>(n, begin + kBlock);

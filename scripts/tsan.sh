@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# ThreadSanitizer over the code that runs threads: the trace reader's read-ahead thread
+# (traces/trace_reader.cpp; the ReadAhead tests) and the parallel sweep's workers, each of which
+# replays with its own read-ahead (cache_sim/sweep.cpp; ParallelSweep). Own build in build-tsan/.
+# Only the two test executables and the libraries they link are built: their `/fast` make
+# targets skip the dependency on the rastrace tool, which these tests do not run.
+# Fails on any data race, lock-order inversion or test failure.
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+dir="$here/build-tsan"
+flags=(-G "Unix Makefiles" -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=-O1 -g"
+       "-DCMAKE_CXX_FLAGS=-fsanitize=thread" "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=thread"
+       -DRASTRACE_WERROR=ON -DRASTRACE_BENCHMARKS=OFF -DRASTRACE_PYTHON=OFF
+       -DCMAKE_GTEST_DISCOVER_TESTS_DISCOVERY_MODE=PRE_TEST)  # no run at build time: ctest is not used
+if command -v ccache >/dev/null; then
+  flags+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+  export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$here}"
+fi
+start=$(date +%s)
+mkdir -p "$dir"
+cmake -S "$here" -B "$dir" "${flags[@]}" >"$dir/configure.log" 2>&1 || { cat "$dir/configure.log" >&2; exit 1; }
+{
+  nice cmake --build "$dir" -j"$(nproc)" --target core traces scenes cache_sim &&
+    nice make -C "$dir" -j"$(nproc)" test_traces/fast test_cache_sim/fast
+} >"$dir/build.log" 2>&1 || { grep -E 'error|Error' "$dir/build.log" | head -30 >&2; exit 1; }
+echo "tsan: built in $(($(date +%s) - start)) s" >&2
+# halt_on_error: the first report fails the run; second_deadlock_stack: both stacks of an inversion.
+export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 ${TSAN_OPTIONS:-}"
+export RASTRACE_READ_AHEAD=1
+"$dir/tests/test_traces" --gtest_filter='ReadAhead.*:TraceFile*' --gtest_brief=1
+"$dir/tests/test_cache_sim" --gtest_filter='ParallelSweep.*:LiveBank*' --gtest_brief=1
+echo "tsan: no report, total $(($(date +%s) - start)) s" >&2
