@@ -34,7 +34,10 @@ inline constexpr std::uint32_t kIndexTag = 0x58444E49u;  // "INDX"
 inline constexpr std::uint32_t kChunkHeaderBytes = 32;
 inline constexpr std::uint32_t kFooterBytes = 24;
 inline constexpr std::uint32_t kChunkRecords = 1 << 16;
-inline constexpr std::uint32_t kMaxChunkRecords = 1 << 24;  // readers refuse more (bounded memory)
+// Readers refuse more records in one chunk (bounded memory and time: a chunk of identical records
+// compresses to a few bytes, so the bound is on records, not on stored bytes; 2^20 texel records
+// decode to 24 MiB). The writer's default is kChunkRecords.
+inline constexpr std::uint32_t kMaxChunkRecords = 1 << 20;
 inline constexpr std::uint8_t kChunkStartsDraw = 1;
 inline constexpr std::uint8_t kChunkEndsDraw = 2;
 

@@ -146,7 +146,7 @@ struct TraceWriter::State {
 TraceWriter::TraceWriter(const std::string& path, TraceMetadata metadata, TraceWriterOptions options)
     : options_(options) {
   if (options_.chunk_records == 0 || options_.chunk_records > kMaxChunkRecords)
-    throw InputError("trace chunk size " + std::to_string(options_.chunk_records) + ": expected 1..16777216 records");
+    throw InputError("trace chunk size " + std::to_string(options_.chunk_records) + ": expected 1..1048576 records");
   state_ = std::make_unique<State>(path, options_.zstd_level);
   if (!state_->file.stream()) throw_in_file(path, "cannot open for writing");
   if (metadata.tool_version.empty()) metadata.tool_version = RASTRACE_VERSION;
