@@ -7,6 +7,7 @@
 #include <vector>
 #include <memory>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "core/atomic_file.h"
@@ -50,20 +51,38 @@ std::uint64_t Framebuffer::covered_pixels() const {
 namespace {
 
 void write_image(const std::string& path, const OIIO::ImageSpec& spec, const void* pixels) {
+  std::string format = std::filesystem::path(path).extension().string();
+  if (!format.empty()) format.erase(0, 1);
+  if (format.empty()) format = "png";
+  auto out = OIIO::ImageOutput::create(format);
+  if (!out) throw InputError(path + ": cannot write images of this type (" + OIIO::geterror() + ")");
+  if (out->supports("ioproxy")) {
+    // Encoded in memory and written by rastrace's own checked writer: image libraries do not all
+    // report a failed fwrite (a full disk gave a truncated PNG and exit 0), and reading a
+    // truncated PNG back makes libpng longjmp past OpenImageIO's error string (a leak).
+    std::vector<unsigned char> encoded;
+    OIIO::Filesystem::IOVecOutput memory(encoded);
+    if (!out->set_ioproxy(&memory) || !out->open(path, spec) || !out->write_image(spec.format, pixels) ||
+        !out->close())
+      throw InputError(path + ": cannot encode the image: " + out->geterror());
+    write_file_atomically(path, [&](std::ostream& file) {
+      file.write(reinterpret_cast<const char*>(encoded.data()), static_cast<std::streamsize>(encoded.size()));
+    });
+    return;
+  }
   write_via_temporary(path, [&](const std::filesystem::path& temporary) {
-    // The temporary's name ends in ".tmp.<pid>": tell OpenImageIO the real format by extension.
-    std::string format = std::filesystem::path(path).extension().string();
-    if (!format.empty()) format.erase(0, 1);
-    auto out = OIIO::ImageOutput::create(format.empty() ? std::string("png") : format);
-    if (!out) throw InputError(path + ": cannot write images of this type (" + OIIO::geterror() + ")");
     if (!out->open(temporary.string(), spec) || !out->write_image(spec.format, pixels) || !out->close())
       throw InputError(path + ": write failed: " + out->geterror());
-    // Image libraries do not all report a failed fwrite (a full disk gave a truncated PNG and
-    // exit 0): the file counts as written only when it reads back whole.
+    // The file counts as written only when it reads back whole (see above). The reader's error is
+    // taken here: left pending, OpenImageIO prints it from the destructor.
     auto in = OIIO::ImageInput::open(temporary.string());
+    if (!in)
+      throw InputError(path + ": write failed (disk full?): the image does not read back (" + OIIO::geterror() +
+                       ")");
     std::vector<unsigned char> check(spec.image_bytes());
-    if (!in || !in->read_image(0, 0, 0, spec.nchannels, spec.format, check.data()))
-      throw InputError(path + ": write failed (disk full?): the image does not read back whole");
+    if (!in->read_image(0, 0, 0, spec.nchannels, spec.format, check.data()))
+      throw InputError(path + ": write failed (disk full?): the image does not read back whole (" + in->geterror() +
+                       ")");
   });
 }
 
