@@ -1,7 +1,7 @@
 // `rastrace render SCENE -o image.png [--trace out.rtrace] [--vcache entries=16,policy=fifo]
 //  [--tcache size=16KiB,line=64B,assoc=4,policy=lru,layout=block4] [--zcache model=attila]
 //  [--ccache model=attila] [--depth-test early|late] [--hiz] [--raster tiled8] [--filter trilinear]
-//  [--vipm METHOD --lod N] [--json]`:
+//  [--vipm METHOD --lod N] [--miss-map misses.png] [--json]`:
 // draws a scene with the software pipeline (in a triangle ordering, or at a VIPM level of detail),
 // simulating a post-transform vertex cache, a texture cache and the depth and colour caches live
 // (and writing the trace when asked), and prints what the frame cost (experiments/frame_render.h).
@@ -11,6 +11,7 @@
 #include "apps/commands.h"
 #include "apps/render_flags.h"
 #include "core/error.h"
+#include "cache_sim/cache_spec.h"
 #include "core/table.h"
 #include "experiments/frame_render.h"
 
@@ -34,6 +35,7 @@ struct RenderCommand {
   bool json = false;
   HierarchyRequest hierarchy;  // --level, --units, --tile, --inclusion
   unsigned frames = 1;
+  std::string miss_map;
 };
 
 void run_render(const RenderCommand& command) {
@@ -53,9 +55,15 @@ void run_render(const RenderCommand& command) {
   spec.image = command.output;
   spec.hierarchy = command.hierarchy;
   spec.frames = command.frames;
+  spec.miss_map = !command.miss_map.empty();
   const Frame frame = render_frame(spec);
   frame.result.framebuffer.write_colour(command.output);
   if (!command.depth.empty()) frame.result.framebuffer.write_depth(command.depth);
+  if (frame.miss_map) {
+    const ByteCacheChoice tcache = parse_byte_cache(command.tcache, "--tcache");
+    std::cerr << write_texture_miss_map(
+        *frame.miss_map, format_cache_spec(tcache.cache) + ",layout=" + layout_name(tcache.layout), command.miss_map);
+  }
   std::vector<Table> tables = {frame.table};
   tables.insert(tables.end(), frame.hierarchy.begin(), frame.hierarchy.end());
   std::cout << render_tables(tables, format);
@@ -99,6 +107,9 @@ void add_render_command(CLI::App& app) {
                       "Draw the frame N times from the scene's camera through the --level hierarchy, which keeps "
                       "its contents: misses per frame")
       ->check(CLI::Range(1u, 10000u));
+  command->add_option("--miss-map", options->miss_map,
+                      "Draw per pixel the misses of the texture cache (--tcache) its fragments caused (0, 1, 2, 3+; "
+                      "legend and totals in FILE.txt), as replay --miss-map does from a trace");
   command->add_option("--format", options->format, "md, csv, latex or json")->capture_default_str();
   command->add_flag("--json", options->json, "Same as --format json");
   command->footer(
@@ -110,7 +121,9 @@ void add_render_command(CLI::App& app) {
       "bunny.rtrace\n"
       "  rastrace render builtin:bunny -o bunny-lod.png --vipm sliding --lod 30000 --trace bunny-lod.rtrace\n"
       "  rastrace render builtin:bunny -o bunny.png --order tipsy --depth-test late --hiz --zcache "
-      "model=attila,size=32KiB --ccache size=8KiB,line=64B,assoc=2,policy=fifo,layout=morton,pixel=4B --json");
+      "model=attila,size=32KiB --ccache size=8KiB,line=64B,assoc=2,policy=fifo,layout=morton,pixel=4B --json\n"
+      "  rastrace render builtin:bunny -o bunny.png --tcache size=32KiB,line=128B,assoc=2,policy=lru,layout=block4 "
+      "--miss-map bunny-misses.png");
   command->callback([options] { run_render(*options); });
 }
 

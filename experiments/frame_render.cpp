@@ -96,6 +96,15 @@ Frame render_frame(const FrameSpec& spec) {
   if (!spec.hierarchy.levels.empty()) hierarchies.push_back(parse_hierarchy(spec.hierarchy));
   HierarchySink hierarchy_sink(hierarchies, levels);
   if (!hierarchies.empty()) sinks.push_back(&hierarchy_sink);
+  std::optional<TextureMissMapSink> miss_map;
+  if (spec.miss_map) {
+    if (tcache.cache.policy == ReplacementPolicy::Opt)
+      throw InputError("--miss-map with --tcache policy=opt: a live miss map needs fifo, lru or random (replay the "
+                       "trace for OPT's map)");
+    miss_map.emplace(tcache.cache, tcache.layout, levels, static_cast<std::uint32_t>(scene.width),
+                     static_cast<std::uint32_t>(scene.height));
+    sinks.push_back(&*miss_map);
+  }
   std::optional<TraceWriter> writer;
   if (!spec.trace.empty()) {
     TraceMetadata metadata = render_trace_metadata(flags, scene, levels);
@@ -107,7 +116,7 @@ Frame render_frame(const FrameSpec& spec) {
     sinks.push_back(&*writer);
   }
   TeeSink tee(sinks);
-  Frame frame{render_scene(scene, options, &tee), {}, {}};  // render_scene calls finish() on every sink
+  Frame frame{render_scene(scene, options, &tee), {}, {}, {}};  // render_scene calls finish() on every sink
 
   const PipelineStats& p = frame.result.pipeline;
   const RasterStats& r = frame.result.raster;
@@ -175,6 +184,11 @@ Frame render_frame(const FrameSpec& spec) {
   if (!hierarchies.empty())
     frame.hierarchy.push_back(hierarchy_table({{"scene", flags.scene}, {"raster", flags.raster}, {"order", flags.order}},
                                               hierarchies.front(), hierarchy_sink.hierarchy(0)));
+  if (miss_map) {
+    if (miss_map->map().stats.accesses == 0)
+      throw InputError("--miss-map: the frame read no texels (the scene has no textured draw)");
+    frame.miss_map = miss_map->map();
+  }
   if (spec.frames > 1) frame.hierarchy.push_back(repeated_frames_table(spec, scene, options, hierarchy_sink));
   return frame;
 }

@@ -6,11 +6,13 @@
 // streams of memory traffic of experiments/frame_traffic.h) that states every setting.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "core/table.h"
 #include "experiments/hierarchy_tables.h"
 #include "experiments/render_settings.h"
+#include "experiments/texture_miss_map.h"
 #include "pipeline/render_scene.h"
 
 namespace rastrace {
@@ -30,12 +32,14 @@ struct FrameSpec {
   // hierarchy, which keeps its contents between frames (the inter-frame reuse of Cox, Bhandari and
   // Shantz 1998); the table and the trace describe the first frame, the hierarchy table every frame.
   unsigned frames = 1;
+  bool miss_map = false;  // render --miss-map: charge the texture cache's misses to their pixels (frame 1)
 };
 
 struct Frame {
   RenderResult result;
   Table table;  // one row; title "Frame: <scene>"
   std::vector<Table> hierarchy;  // with spec.hierarchy: its "Cache hierarchy" table (per frame with frames > 1)
+  std::optional<TextureMissMap> miss_map;  // with spec.miss_map, under the texture cache (tcache)
 };
 
 // Throws InputError for a bad scene, cache spec, ordering or VIPM setting.

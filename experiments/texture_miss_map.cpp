@@ -15,37 +15,34 @@ namespace rastrace {
 
 namespace {
 
-class MissMapSink final : public EventSink {
- public:
-  MissMapSink(TextureMissMap& map, const CacheConfig& cache, const LayoutSpec& layout, const TextureLevels& textures)
-      : map_(map), cache_(cache), layout_(layout, textures) {}
-
-  void texel_accesses(std::span<const TexelAccess> accesses) override {
-    for (const TexelAccess& t : accesses) {
-      if (!layout_.contains(t.texture, t.level, t.x, t.y))
-        throw InputError("texel access (texture " + std::to_string(t.texture) + ", level " + std::to_string(t.level) +
-                         ", x " + std::to_string(t.x) + ", y " + std::to_string(t.y) +
-                         ") lies outside the textures the trace metadata lists");
-      if (t.pixel_x >= map_.width || t.pixel_y >= map_.height)
-        throw InputError("texel access at pixel (" + std::to_string(t.pixel_x) + ", " + std::to_string(t.pixel_y) +
-                         ") lies outside the " + std::to_string(map_.width) + "x" + std::to_string(map_.height) +
-                         " frame the trace metadata gives");
-      const std::size_t p = std::size_t{t.pixel_y} * map_.width + t.pixel_x;
-      map_.textured[p] = 1;
-      if (!cache_.access(layout_.address(t.texture, t.level, t.x, t.y))) ++map_.misses[p];
-    }
-  }
-  void finish() override { map_.stats = cache_.stats(); }
-
- private:
-  TextureMissMap& map_;
-  ByteCache cache_;
-  TextureLayout layout_;
-};
-
 std::uint8_t channel(float v) { return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); }
 
 }  // namespace
+
+TextureMissMapSink::TextureMissMapSink(const CacheConfig& cache, const LayoutSpec& layout, const TextureLevels& textures,
+                                       std::uint32_t width, std::uint32_t height)
+    : cache_(cache), layout_(layout, textures) {
+  map_.width = width;
+  map_.height = height;
+  map_.misses.assign(std::size_t{width} * height, 0);
+  map_.textured.assign(map_.misses.size(), 0);
+}
+
+void TextureMissMapSink::texel_accesses(std::span<const TexelAccess> accesses) {
+  for (const TexelAccess& t : accesses) {
+    if (!layout_.contains(t.texture, t.level, t.x, t.y))
+      throw InputError("texel access (texture " + std::to_string(t.texture) + ", level " + std::to_string(t.level) +
+                       ", x " + std::to_string(t.x) + ", y " + std::to_string(t.y) +
+                       ") lies outside the textures the trace metadata lists");
+    if (t.pixel_x >= map_.width || t.pixel_y >= map_.height)
+      throw InputError("texel access at pixel (" + std::to_string(t.pixel_x) + ", " + std::to_string(t.pixel_y) +
+                       ") lies outside the " + std::to_string(map_.width) + "x" + std::to_string(map_.height) +
+                       " frame the trace metadata gives");
+    const std::size_t p = std::size_t{t.pixel_y} * map_.width + t.pixel_x;
+    map_.textured[p] = 1;
+    if (!cache_.access(layout_.address(t.texture, t.level, t.x, t.y))) ++map_.misses[p];
+  }
+}
 
 std::uint64_t TextureMissMap::pixels_with(int count) const {
   std::uint64_t n = 0;
@@ -62,15 +59,11 @@ TextureMissMap texture_miss_map(const std::string& trace, const CacheConfig& cac
   const TraceSummary summary = summarize_trace(trace);
   if (summary.metadata.width == 0 || summary.metadata.height == 0)
     throw_in_file(trace, "no frame size in the metadata: a miss map needs a rendered trace (rastrace render --trace)");
-  TextureMissMap map;
-  map.width = summary.metadata.width;
-  map.height = summary.metadata.height;
-  map.misses.assign(std::size_t{map.width} * map.height, 0);
-  map.textured.assign(map.misses.size(), 0);
-  MissMapSink sink(map, cache, layout, summary.metadata.textures);
+  TextureMissMapSink sink(cache, layout, summary.metadata.textures, summary.metadata.width, summary.metadata.height);
   ReplayKinds kinds;
   kinds.vertices = kinds.addresses = kinds.framebuffer = false;
   replay_file(trace, sink, kinds);
+  const TextureMissMap& map = sink.map();
   if (map.stats.accesses == 0) throw_in_file(trace, "no texel accesses: expected a textured frame's trace");
   return map;
 }

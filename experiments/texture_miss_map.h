@@ -1,8 +1,9 @@
 // Where a frame's texture misses happen on screen, as Hakura and Gupta ("The design and analysis
 // of a cache architecture for texture mapping", ISCA 1997) draw them: each pixel coloured by how
 // many texture-cache misses its fragments caused, 0, 1, 2 or 3 and more (`rastrace replay TRACE
-// --cache SPEC --miss-map FILE.png`). The trace's texel accesses carry their pixel, so a replay
-// through one cache charges every miss to the pixel that asked.
+// --cache SPEC --miss-map FILE.png`, or live: `rastrace render SCENE --miss-map FILE.png`). Texel
+// accesses carry their pixel, so a replay through one cache charges every miss to the pixel that
+// asked.
 // Image: the frame, pixels without texel accesses white, the others in kMissColours (green,
 // yellow, orange, red for 0, 1, 2, 3+), above a legend strip of the four colours left to right;
 // beside it, FILE.png.txt states the legend, the cache and the totals (PNG has no room for text
@@ -13,8 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "cache_sim/byte_cache.h"
 #include "cache_sim/cache_config.h"
 #include "cache_sim/texture_layout.h"
+#include "traces/sink.h"
 
 namespace rastrace {
 
@@ -25,6 +28,23 @@ struct TextureMissMap {
   CacheStats stats;                     // accesses, misses of the whole replay
   // Pixels by class: untextured, then 0, 1, 2, 3+ misses.
   std::uint64_t pixels_with(int misses) const;
+};
+
+// Charges the texel accesses it receives, through one cache, to their pixels: beside the pipeline
+// (render --miss-map) or behind a trace reader. Throws InputError for an access outside the
+// textures or the frame.
+class TextureMissMapSink final : public EventSink {
+ public:
+  TextureMissMapSink(const CacheConfig& cache, const LayoutSpec& layout, const TextureLevels& textures,
+                     std::uint32_t width, std::uint32_t height);
+  void texel_accesses(std::span<const TexelAccess> accesses) override;
+  void finish() override { map_.stats = cache_.stats(); }
+  const TextureMissMap& map() const { return map_; }
+
+ private:
+  TextureMissMap map_;
+  ByteCache cache_;
+  TextureLayout layout_;
 };
 
 // Replays the trace's texel accesses through `cache` (fifo, lru or random) under `layout`.

@@ -56,5 +56,45 @@ TEST(TextureMissMap, PixelMissesAddUpToTheReplayAndTheImageHasItsLegend) {
   EXPECT_NE(text.str().find("red     3 or more  " + std::to_string(map.pixels_with(3))), std::string::npos);
 }
 
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(TextureMissMap, RenderDrawsTheSameMapLiveAsTheReplayOfItsTraceAtOneAndTwoThreads) {
+  const testing::TempDir dir;
+  const std::string spec = "size=8KiB,line=64B,assoc=2,policy=fifo,layout=morton";
+  for (const char* threads : {"1", "2"}) {
+    const std::string trace = dir.file(std::string("spider") + threads + ".rtrace");
+    const std::string live = dir.file(std::string("live") + threads + ".png");
+    const testing::CommandRun render =
+        testing::run_rastrace({"render", "builtin:spider", "--size", "200x150", "-o", dir.file("s.png"), "--trace", trace,
+                               "--tcache", spec, "--threads", threads, "--miss-map", live});
+    ASSERT_EQ(render.exit_code, 0) << render.err;
+    const testing::CommandRun replay =
+        testing::run_rastrace({"replay", trace, "--cache", spec, "--miss-map", dir.file("replayed.png")});
+    ASSERT_EQ(replay.exit_code, 0) << replay.err;
+    ASSERT_FALSE(read_file(live).empty());
+    EXPECT_EQ(read_file(live), read_file(dir.file("replayed.png"))) << threads << " threads";
+    // The legends differ only in the file name on their first line.
+    const std::string live_text = read_file(live + ".txt");
+    const std::string replay_text = read_file(dir.file("replayed.png.txt"));
+    EXPECT_EQ(live_text.substr(live_text.find('\n')), replay_text.substr(replay_text.find('\n')));
+    EXPECT_NE(live_text.find("cache: " + spec), std::string::npos) << live_text;
+  }
+}
+
+TEST(TextureMissMap, RenderRefusesALiveMapUnderOpt) {
+  const testing::TempDir dir;
+  const testing::CommandRun render =
+      testing::run_rastrace({"render", "builtin:bunny", "--size", "64x48", "-o", dir.file("b.png"), "--tcache",
+                             "size=8KiB,line=64B,assoc=2,policy=opt", "--miss-map", dir.file("m.png")});
+  EXPECT_EQ(render.exit_code, 1);
+  EXPECT_NE(render.err.find("--miss-map with --tcache policy=opt"), std::string::npos) << render.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("m.png")));
+}
+
 }  // namespace
 }  // namespace rastrace
