@@ -4,6 +4,11 @@
 // addresses. Every access feeds the fully associative stack profile (misses of every capacity at
 // once) and, when `sets` is given, the set-associative profile (every associativity 1..max_ways
 // of that many sets). Statistics are valid after finish().
+// With `units` > 1 the texel stream is split among texture units by screen tile, as
+// CacheHierarchy deals it out to its L1s (unit_of_pixel), and every unit has its own profiles:
+// the sums are the misses of a hierarchy's first level at every size (or associativity) at once,
+// since each L1 sees only its unit's accesses. Vertex and address streams carry no pixel and
+// are refused with units > 1.
 #pragma once
 
 #include <cstdint>
@@ -24,12 +29,15 @@ struct LruProfileSpec {
   std::uint32_t stride = 32;      // vertex source: bytes per vertex
   std::uint64_t sets = 0;         // 0: no set-associative profile
   std::uint32_t max_ways = 16;
+  std::uint32_t units = 1;  // texel source: L1 copies the stream is dealt out to
+  std::uint32_t tile = 16;  // pixels: side of the screen tiles dealt out to the units
 };
 
 class LruProfileSink final : public EventSink {
  public:
-  // Throws InputError on a line size that is not a power of two, a stride of 0, or sets with
-  // max_ways outside 1..1024. `textures`: every texture's level sizes (the trace metadata's).
+  // Throws InputError on a line size that is not a power of two, a stride of 0, sets with
+  // max_ways outside 1..1024, units outside 1..1024, a tile of 0, or units > 1 for a stream
+  // other than texels. `textures`: every texture's level sizes (the trace metadata's).
   LruProfileSink(const LruProfileSpec& spec, TextureLevels textures);
 
   void begin_draw(const DrawInfo& draw) override { draw_ = draw.draw; }
@@ -39,15 +47,22 @@ class LruProfileSink final : public EventSink {
   void end_draw() override {}
   void finish() override {}
 
-  const LruStackProfile& stack() const { return stack_; }
-  // Null without `sets`.
-  const SetAssocLruProfile* set_associative() const { return set_assoc_ ? &*set_assoc_ : nullptr; }
+  // Sums over the units.
+  std::uint64_t accesses() const;
+  std::uint64_t compulsory() const;
+  // [d]: re-references at stack distance d.
+  std::vector<std::uint64_t> histogram() const;
+  // Misses of fully associative LRU caches of `lines` lines, one per unit.
+  std::uint64_t misses(std::uint64_t lines) const;
+  bool has_set_associative() const { return !set_assoc_.empty(); }
+  // Misses of LRU caches of spec.sets sets and `ways` ways (1..max_ways), one per unit.
+  std::uint64_t set_misses(std::uint32_t ways) const;
 
  private:
-  void feed(std::uint64_t address) {
+  void feed(std::uint64_t address, std::uint32_t unit = 0) {
     const std::uint64_t line = address >> line_shift_;
-    stack_.access(line);
-    if (set_assoc_) set_assoc_->access(line);
+    stack_[unit].access(line);
+    if (!set_assoc_.empty()) set_assoc_[unit].access(line);
   }
 
   LruProfileSpec spec_;
@@ -55,8 +70,8 @@ class LruProfileSink final : public EventSink {
   std::optional<TextureLayout> layout_;
   std::size_t texture_count_ = 0;
   std::uint32_t draw_ = 0;
-  LruStackProfile stack_;
-  std::optional<SetAssocLruProfile> set_assoc_;
+  std::vector<LruStackProfile> stack_;        // one per unit
+  std::vector<SetAssocLruProfile> set_assoc_;  // one per unit, empty without sets
 };
 
 }  // namespace rastrace

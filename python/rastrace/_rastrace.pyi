@@ -89,5 +89,7 @@ def sweep(trace: str, cache: str = "size=1KiB..64KiB", threads: int = 0, keep_ve
     """Every combination of the spec over the trace, in parallel, as `rastrace sweep`."""
 
 def lru_profile(trace: str, line: str = "64B", layout: str = "linear", source: str = "", texel: str = "4B",
-                align: str = "4KiB", stride: str = "32B", sets: int = 0, max_ways: int = 16) -> dict:
-    """histogram, misses[c] for every fully associative size c (lines), set_misses[w-1] with sets."""
+                align: str = "4KiB", stride: str = "32B", sets: int = 0, max_ways: int = 16, units: int = 1,
+                tile: int = 16) -> dict:
+    """histogram, misses[c] for every fully associative size c (lines), set_misses[w-1] with sets;
+    with units > 1, sums over texture units dealt screen tiles (a hierarchy's first level)."""

@@ -147,7 +147,8 @@ py::dict replay(const std::string& trace, const std::vector<std::string>& caches
 
 py::dict lru_profile(const std::string& trace, const std::string& line, const std::string& layout,
                      const std::string& source, const std::string& texel, const std::string& align,
-                     const std::string& stride, std::uint64_t sets, std::uint32_t max_ways) {
+                     const std::string& stride, std::uint64_t sets, std::uint32_t max_ways, std::uint32_t units,
+                     std::uint32_t tile) {
   std::vector<std::uint64_t> histogram, misses, set_misses;
   std::uint64_t accesses = 0, compulsory = 0;
   LruProfileSpec spec;
@@ -162,18 +163,19 @@ py::dict lru_profile(const std::string& trace, const std::string& line, const st
     spec.stride = static_cast<std::uint32_t>(parse_byte_size(stride, "stride"));
     spec.sets = sets;
     spec.max_ways = max_ways;
+    spec.units = units;
+    spec.tile = tile;
     LruProfileSink sink(spec, summary.metadata.textures);
     replay_file(trace, sink);
-    const LruStackProfile& stack = sink.stack();
-    accesses = stack.accesses();
-    compulsory = stack.compulsory();
-    histogram = stack.histogram();
+    accesses = sink.accesses();
+    compulsory = sink.compulsory();
+    histogram = sink.histogram();
     // misses[c]: a fully associative LRU cache of c lines misses the first references and every
     // re-reference at stack distance c or more.
     misses.assign(histogram.size() + 1, compulsory);
     for (std::size_t c = histogram.size(); c-- > 0;) misses[c] = misses[c + 1] + histogram[c];
-    if (const SetAssocLruProfile* s = sink.set_associative())
-      for (std::uint32_t w = 1; w <= max_ways; ++w) set_misses.push_back(s->misses(w));
+    if (sink.has_set_associative())
+      for (std::uint32_t w = 1; w <= max_ways; ++w) set_misses.push_back(sink.set_misses(w));
   }
   py::dict out;
   out["source"] = to_string(spec.source);
@@ -205,11 +207,14 @@ void bind_caches(py::module_& m) {
         "caches (entries=...). Returns Columns, which pandas.DataFrame takes as is.");
   m.def("lru_profile", &lru_profile, py::arg("trace"), py::arg("line") = "64B", py::arg("layout") = "linear",
         py::arg("source") = "", py::arg("texel") = "4B", py::arg("align") = "4KiB", py::arg("stride") = "32B",
-        py::arg("sets") = 0, py::arg("max_ways") = 16,
+        py::arg("sets") = 0, py::arg("max_ways") = 16, py::arg("units") = 1, py::arg("tile") = 16,
         "The one-pass LRU profiles of a trace's address stream (source: texel, vertex or address; default\n"
         "what the trace holds): histogram[d] = re-references at stack distance d, misses[c] = misses of a\n"
         "fully associative LRU cache of c lines (every c at once, Mattson et al. 1970), and with sets > 0,\n"
-        "set_misses[w-1] = misses of the LRU cache of that many sets and w ways, w = 1..max_ways.");
+        "set_misses[w-1] = misses of the LRU cache of that many sets and w ways, w = 1..max_ways.\n"
+        "units > 1 (texel source): the accesses are dealt out by screen tile (tile pixels) to that many\n"
+        "texture units, each with its own cache, as `rastrace replay --level ... --units N --tile T`;\n"
+        "the figures are sums over the units: a hierarchy's first level at every size at once.");
 
   py::class_<SweepRows>(m, "_SweepRows")
       .def("__len__", [](const SweepRows& r) { return r.rows.size(); })

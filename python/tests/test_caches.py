@@ -56,6 +56,20 @@ def test_lru_profile_equals_fully_associative_lru_sweeps(bunny_trace):
             assert profile["set_misses"][ways - 1] == misses
 
 
+def test_lru_profile_of_four_units_equals_the_cli_hierarchys_first_level(bunny_trace):
+    """units=4: every L1 size of a four-unit hierarchy at once, as `replay --level ... --units 4`."""
+    profile = rastrace.lru_profile(str(bunny_trace), line="64B", layout="morton", units=4, tile=16)
+    for size in ("1KiB", "4KiB", "16KiB"):
+        rows = cli_json("replay", bunny_trace, "--level", f"size={size},line=64B,assoc=full,policy=lru,layout=morton",
+                        "--units", "4", "--tile", "16")
+        lines = int(size[:-3]) * 1024 // 64
+        assert rows[0]["level"] == "L1 (4 units)"
+        assert profile["misses"][min(lines, len(profile["misses"]) - 1)] == rows[0]["misses"], size
+        assert profile["accesses"] == rows[0]["accesses"]
+    with pytest.raises(rastrace.InputError, match="only texel accesses carry the pixel"):
+        rastrace.lru_profile(str(bunny_trace), source="vertex", units=2)
+
+
 def test_replays_in_two_threads_overlap(bunny_trace):
     """The GIL is released: two replays run at once while the main thread keeps running Python."""
     specs = ["size=1KiB..64KiB,assoc=1/2/4/full,policy=fifo/lru/random,layout=linear/block4/morton"]  # 252 caches
