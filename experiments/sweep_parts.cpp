@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/json_integer.h"
 
 namespace rastrace {
 
@@ -88,16 +89,16 @@ SweepPart read_sweep_part(const std::string& path) {
       if (!object.is_object() || !object.contains(name)) throw InputError("missing");
       return object.at(name);
     };
-    if (at(j, "rastrace_sweep_part").get<int>() != kPartFormat)
+    if (json_integer<int>(at(j, "rastrace_sweep_part"), "rastrace_sweep_part") != kPartFormat)
       throw InputError("expected part format " + std::to_string(kPartFormat));
     SweepPart part;
     part.version = at(j, "version").get<std::string>();
     part.trace_digest = at(j, "trace_digest").get<std::string>();
     part.configuration = at(j, "configuration").get<std::string>();
-    part.shard.index = at(j, "shard").get<std::uint32_t>();
-    part.shard.count = at(j, "shards").get<std::uint32_t>();
+    part.shard.index = json_integer<std::uint32_t>(at(j, "shard"), "shard");
+    part.shard.count = json_integer<std::uint32_t>(at(j, "shards"), "shards");
     if (part.shard.index < 1 || part.shard.index > part.shard.count) throw InputError("expected 1 <= shard <= shards");
-    part.configurations = at(j, "configurations").get<std::size_t>();
+    part.configurations = json_integer<std::size_t>(at(j, "configurations"), "configurations");
     part.skipped = at(j, "skipped").get<std::vector<std::string>>();
     const Json& table = at(j, "table");
     part.table.title = at(table, "title").get<std::string>();
@@ -107,9 +108,9 @@ SweepPart read_sweep_part(const std::string& path) {
     }
     for (const Json& c : at(table, "columns"))
       part.table.columns.push_back(
-          {at(c, "key").get<std::string>(), at(c, "heading").get<std::string>(), at(c, "precision").get<int>()});
+          {at(c, "key").get<std::string>(), at(c, "heading").get<std::string>(), json_integer<int>(at(c, "precision"), "precision")});
     for (const Json& r : at(table, "rows")) {
-      const std::size_t configuration = at(r, "configuration").get<std::size_t>();
+      const std::size_t configuration = json_integer<std::size_t>(at(r, "configuration"), "configuration");
       if (configuration >= part.configurations) throw InputError("expected a configuration below configurations");
       std::vector<TableCell> cells;
       for (const Json& cell : at(r, "cells")) cells.push_back(cell_from_json(cell));

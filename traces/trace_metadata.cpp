@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/json_integer.h"
 
 namespace rastrace {
 
@@ -32,12 +33,17 @@ TraceMetadata metadata_from_json(const std::string& text, const std::string& fil
     m.tool_version = j.at("tool_version").get<std::string>();
     m.scene = j.at("scene").get<std::string>();
     m.ordering = j.at("ordering").get<std::string>();
-    m.width = j.at("resolution").at(0).get<std::uint32_t>();
-    m.height = j.at("resolution").at(1).get<std::uint32_t>();
+    m.width = json_integer<std::uint32_t>(j.at("resolution").at(0), file + ": metadata header: resolution[0]");
+    m.height = json_integer<std::uint32_t>(j.at("resolution").at(1), file + ": metadata header: resolution[1]");
     m.filter = j.at("filter").get<std::string>();
-    for (const auto& t : j.at("textures")) {
+    for (std::size_t i = 0; i < j.at("textures").size(); ++i) {
       std::vector<LevelSize> levels;
-      for (const auto& l : t) levels.push_back({l.at(0).get<std::uint32_t>(), l.at(1).get<std::uint32_t>()});
+      const auto& t = j.at("textures").at(i);
+      for (std::size_t k = 0; k < t.size(); ++k) {
+        const std::string where = file + ": metadata header: textures[" + std::to_string(i) + "][" + std::to_string(k) + "]";
+        levels.push_back({json_integer<std::uint32_t>(t.at(k).at(0), where + "[0]"),
+                          json_integer<std::uint32_t>(t.at(k).at(1), where + "[1]")});
+      }
       m.textures.push_back(std::move(levels));
     }
     if (j.contains("extra")) m.extra = j.at("extra").get<std::map<std::string, std::string>>();
