@@ -122,6 +122,14 @@ TEST(HierarchyReplay, AStaticCameraMissesInTheL2OnlyInTheFirstFrameWhenTheL2Hold
     EXPECT_EQ(l2.at("accesses"), l1.at("misses"));
     EXPECT_EQ(l2.at("misses").get<std::uint64_t>(), f == 0 ? compulsory : 0u) << "frame " << f + 1;
   }
+  // The trace holds the 3 frames; replay --per-frame gives the render's per-frame rows.
+  const nlohmann::json per_frame =
+      replay_json({"replay", trace, "--per-frame", "--level", "size=8KiB,line=128B,assoc=4,layout=block4", "--level",
+                   "size=4MiB,line=128B,assoc=16", "--format", "json"});
+  ASSERT_EQ(per_frame.size(), 6u);
+  for (std::size_t r = 0; r < 6; ++r)
+    for (const char* key : {"frame", "cache", "level", "accesses", "misses", "line_misses", "miss_rate", "bytes_fetched"})
+      EXPECT_EQ(per_frame[r].at(key), rows[3 + r].at(key)) << "row " << r << " " << key;
   // Without --level, the frame table alone, its counts summed over the frames.
   const nlohmann::json plain = replay_json({"render", "builtin:bunny", "--size", "192x192", "-o", dir.file("c.png"),
                                             "--frames", "3", "--format", "json"});

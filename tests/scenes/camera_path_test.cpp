@@ -163,6 +163,10 @@ TEST(JsonCameraPath, TheOrbitExampleCirclesItsTargetInThirtyFrames) {
     EXPECT_NEAR(glm::length(glm::vec2(c.eye.x, c.eye.z)), 2.6f, 1e-3f) << "frame " << f;
     EXPECT_EQ(c.target, glm::vec3(0.0f, 0.1f, 0.0f));
   }
+  const Scene grid =
+      load_scene((std::filesystem::path(RASTRACE_TEST_FILES_DIR).parent_path() / "docs" / "grid_orbit_scene.json").string());
+  ASSERT_EQ(grid.camera_path.keyframes.size(), 9u);
+  EXPECT_EQ(camera_at(grid.camera, grid.camera_path, 30).eye, camera_at(grid.camera, grid.camera_path, 0).eye);
 }
 
 }  // namespace
