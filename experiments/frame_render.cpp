@@ -67,8 +67,8 @@ void add_counts(RasterStats& total, const RasterStats& r) {
 std::string describe_camera(const Scene& scene) {
   if (scene.camera_path.empty()) return "static (the scene's)";
   const std::vector<CameraKeyframe>& keys = scene.camera_path.keyframes;
-  return "path of " + std::to_string(keys.size()) + " keyframes, frames " + std::to_string(keys.front().frame) +
-         ".." + std::to_string(keys.back().frame);
+  return "path of " + std::to_string(keys.size()) + " keyframes, frames " + std::to_string(keys.front().frame) + ".." +
+         std::to_string(keys.back().frame);
 }
 
 }  // namespace
@@ -205,8 +205,9 @@ Frame render_frame(const FrameSpec& spec) {
   if (spec.frames > 1) {
     table.parameters.emplace_back("frames", static_cast<std::uint64_t>(spec.frames));
     table.parameters.emplace_back("camera", describe_camera(scene));
-    table.parameters.emplace_back("counts", "totals over all frames; caches keep their contents between frames; "
-                                            "per pixel: of width x height x frames");
+    table.parameters.emplace_back("counts",
+                                  "totals over all frames; caches keep their contents between frames; "
+                                  "per pixel: of width x height x frames");
   }
   table.columns = {{"triangles", "triangles drawn", 0},
                    {"degenerate", "degenerate", 0},

@@ -35,14 +35,10 @@ Table per_frame_table(TableParameters parameters, const std::vector<std::string>
   t.parameters = std::move(parameters);
   t.parameters.emplace_back("frames", static_cast<std::uint64_t>(counts.frames().size()));
   t.parameters.emplace_back("between_frames", "caches keep their contents");
-  t.columns = {{"frame", "frame", 0},
-               {"cache", "cache", 0},
-               {"level", "level", 0},
-               {"accesses", "accesses", 0},
-               {"misses", "misses", 0},
-               {"line_misses", "line misses", 0},
-               {"miss_rate", "miss rate", 4},
-               {"bytes_fetched", "bytes from next level", 0}};
+  t.columns = {{"frame", "frame", 0},         {"cache", "cache", 0},
+               {"level", "level", 0},         {"accesses", "accesses", 0},
+               {"misses", "misses", 0},       {"line_misses", "line misses", 0},
+               {"miss_rate", "miss rate", 4}, {"bytes_fetched", "bytes from next level", 0}};
   const std::vector<FrameCountsSink::FrameEnd>& ends = counts.frames();
   for (std::size_t f = 0; f < ends.size(); ++f)
     for (std::size_t i = 0; i < ends[f].totals.size(); ++i)
@@ -68,8 +64,9 @@ Table per_frame_replay_table(const std::string& trace, const std::vector<std::st
     const CacheSpec spec = parse_cache_spec(text, option);
     const SweepSource source = spec.source.value_or(fallback);
     if (spec.kind != CacheKind::Byte || spec.buffer || source == SweepSource::VertexBuffer)
-      throw InputError(option + " '" + text + "' with --per-frame: expected a texture (or address) byte cache; "
-                                              "vertex, depth and colour caches have no per-frame table");
+      throw InputError(option + " '" + text +
+                       "' with --per-frame: expected a texture (or address) byte cache; "
+                       "vertex, depth and colour caches have no per-frame table");
     for (const ByteCacheChoice& choice : byte_caches(spec)) {
       HierarchySpec one;
       one.hierarchy.levels.push_back({choice.cache, choice.sector_bytes});

@@ -41,8 +41,7 @@ class FrameCountsSink final : public EventSink {
 // "Caches per frame": one row per frame, cache and level with that frame's share of the counts:
 // frame, cache (names[i] for hierarchy i), level, accesses, misses, line_misses, miss_rate,
 // bytes_fetched (from the next level; memory below the last).
-Table per_frame_table(TableParameters parameters, const std::vector<std::string>& names,
-                      const FrameCountsSink& counts);
+Table per_frame_table(TableParameters parameters, const std::vector<std::string>& names, const FrameCountsSink& counts);
 
 // `rastrace replay TRACE --cache SPEC... --level SPEC... --per-frame`: every texture (or address)
 // byte cache of the specs as a one-level hierarchy, and the --level hierarchy, replayed once; the

@@ -381,8 +381,9 @@ TraceReader::TraceReader(const std::string& path) : path_(path) {
   }
   if (version_ >= kFramesTraceVersion && frames_ == 1)
     throw_at_byte(path, 8,
-                  "version " + std::to_string(version_) + " (several frames) but every chunk is of frame 0: a damaged "
-                  "version field (a single-frame trace is version 2)");
+                  "version " + std::to_string(version_) +
+                      " (several frames) but every chunk is of frame 0: a damaged "
+                      "version field (a single-frame trace is version 2)");
   state_ = std::make_unique<ReadState>(std::move(in_));
   state_->ahead_stream.open(path, std::ios::binary);
 }

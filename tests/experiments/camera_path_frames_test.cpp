@@ -14,15 +14,14 @@
 #include "core/error.h"
 #include "experiments/frame_render.h"
 #include "experiments/per_frame_caches.h"
-#include "traces/trace_reader.h"
 #include "tests/support/temp_dir.h"
+#include "traces/trace_reader.h"
 
 namespace rastrace {
 namespace {
 
 std::string orbit_scene() {
-  return (std::filesystem::path(RASTRACE_TEST_FILES_DIR).parent_path() / "docs" / "orbit_scene.json")
-      .string();
+  return (std::filesystem::path(RASTRACE_TEST_FILES_DIR).parent_path() / "docs" / "orbit_scene.json").string();
 }
 
 std::int64_t integer(const TableCell& cell) { return std::get<std::int64_t>(cell.value); }
@@ -107,14 +106,15 @@ TEST(CameraPathFrames, AnOrbitsPerFrameReplayEqualsTheLiveRenderFrameByFrameAndL
   EXPECT_EQ(reader.frames(), 6u);
   const Table replayed = per_frame_replay_table(spec.trace, {}, spec.hierarchy);
   ASSERT_EQ(replayed.rows.size(), live.rows.size());
-  for (std::size_t r = 0; r < live.rows.size(); ++r)
-    EXPECT_EQ(replayed.rows[r], live.rows[r]) << "row " << r;
+  for (std::size_t r = 0; r < live.rows.size(); ++r) EXPECT_EQ(replayed.rows[r], live.rows[r]) << "row " << r;
 
   // The camera moves: the frames differ in accesses, and the L2 keeps part of what earlier frames read.
   std::vector<std::int64_t> accesses, l2_misses;
   for (const auto& row : live.rows) {
-    if (std::get<std::string>(row[kLevel].value) == "L1") accesses.push_back(integer(row[kAccesses]));
-    else l2_misses.push_back(integer(row[kMisses]));
+    if (std::get<std::string>(row[kLevel].value) == "L1")
+      accesses.push_back(integer(row[kAccesses]));
+    else
+      l2_misses.push_back(integer(row[kMisses]));
     EXPECT_EQ(integer(row[kFrame]), static_cast<std::int64_t>((&row - live.rows.data()) / 2));
   }
   EXPECT_NE(accesses[0], accesses[3]);

@@ -89,8 +89,7 @@ TEST(CameraPath, ErrorsNameTheKeyframeAndField) {
   CameraPath path = two_keyframes();
   EXPECT_EQ(camera_path_error(path), "");
   path.keyframes[1].frame = 10;
-  EXPECT_EQ(camera_path_error(path),
-            "keyframes[1].frame: expected a frame after the previous keyframe's 10, found 10");
+  EXPECT_EQ(camera_path_error(path), "keyframes[1].frame: expected a frame after the previous keyframe's 10, found 10");
   path = two_keyframes();
   path.keyframes[0].target = path.keyframes[0].eye;
   EXPECT_THAT(camera_path_error(path), HasSubstr("keyframes[0].target: expected a point different"));
@@ -153,8 +152,7 @@ TEST(JsonCameraPath, BadPathsAreErrorsNamingTheJsonPath) {
 
 TEST(JsonCameraPath, TheOrbitExampleCirclesItsTargetInThirtyFrames) {
   const std::string path =
-      (std::filesystem::path(RASTRACE_TEST_FILES_DIR).parent_path() / "docs" / "orbit_scene.json")
-          .string();
+      (std::filesystem::path(RASTRACE_TEST_FILES_DIR).parent_path() / "docs" / "orbit_scene.json").string();
   const Scene scene = load_scene(path);
   ASSERT_EQ(scene.camera_path.keyframes.size(), 7u);
   EXPECT_EQ(scene.camera_path.keyframes.back().frame, 30u);
@@ -163,8 +161,8 @@ TEST(JsonCameraPath, TheOrbitExampleCirclesItsTargetInThirtyFrames) {
     EXPECT_NEAR(glm::length(glm::vec2(c.eye.x, c.eye.z)), 2.6f, 1e-3f) << "frame " << f;
     EXPECT_EQ(c.target, glm::vec3(0.0f, 0.1f, 0.0f));
   }
-  const Scene grid =
-      load_scene((std::filesystem::path(RASTRACE_TEST_FILES_DIR).parent_path() / "docs" / "grid_orbit_scene.json").string());
+  const Scene grid = load_scene(
+      (std::filesystem::path(RASTRACE_TEST_FILES_DIR).parent_path() / "docs" / "grid_orbit_scene.json").string());
   ASSERT_EQ(grid.camera_path.keyframes.size(), 9u);
   EXPECT_EQ(camera_at(grid.camera, grid.camera_path, 30).eye, camera_at(grid.camera, grid.camera_path, 0).eye);
 }

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "core/error.h"
 #include "tests/support/temp_dir.h"
 #include "traces/crc32c.h"
+#include "traces/text_formats.h"
 #include "traces/trace_reader.h"
 #include "traces/trace_writer.h"
 
@@ -150,6 +152,20 @@ TEST(TraceFrames, OneFrameIsVersionTwoWhetherOrNotFrameZeroIsAnnounced) {
   replay_trace(reader, log);
   EXPECT_TRUE(log.frames.empty());  // a version 2 replay announces no frame
   EXPECT_EQ(log.texels, (std::vector<std::uint64_t>{7}));
+}
+
+TEST(TraceFrames, CsvExportRefusesSeveralFramesItCouldNotSeparate) {
+  const TempDir dir;
+  write_frames(dir.file("three.rtrace"), 3);
+  TraceReader reader(dir.file("three.rtrace"));
+  std::ostringstream out;
+  try {
+    export_csv(reader, out);
+    ADD_FAILURE() << "exported";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("three.rtrace: a trace of 3 frames: CSV has no frame boundaries"));
+  }
+  EXPECT_EQ(out.str(), "");
 }
 
 TEST(TraceFrames, TheWriterRefusesDecreasingOrOversizedFrames) {
