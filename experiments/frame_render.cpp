@@ -239,9 +239,11 @@ Frame render_frame(const FrameSpec& spec) {
     row.push_back(v.lane_slots ? TableCell(v.lane_use()) : TableCell());
   }
   table.add_row(std::move(row));
-  if (!hierarchies.empty())
-    frame.hierarchy.push_back(hierarchy_table({{"scene", flags.scene}, {"raster", flags.raster}, {"order", flags.order}},
-                                              hierarchies.front(), hierarchy_sink.hierarchy(0)));
+  if (!hierarchies.empty()) {
+    TableParameters parameters = {{"scene", flags.scene}, {"raster", flags.raster}, {"order", flags.order}};
+    if (spec.frames > 1) parameters.emplace_back("frames", static_cast<std::uint64_t>(spec.frames));  // totals
+    frame.hierarchy.push_back(hierarchy_table(std::move(parameters), hierarchies.front(), hierarchy_sink.hierarchy(0)));
+  }
   if (miss_map) {
     if (miss_map->map().stats.accesses == 0)
       throw InputError("--miss-map: the frame read no texels (the scene has no textured draw)");
