@@ -104,8 +104,9 @@ void add_render_command(CLI::App& app) {
   command->add_option("--inclusion", options->hierarchy.inclusion, "Hierarchy: inclusive or non-inclusive")
       ->check(CLI::IsMember({"inclusive", "non-inclusive"}));
   command->add_option("--frames", options->frames,
-                      "Draw the frame N times from the scene's camera through the --level hierarchy, which keeps "
-                      "its contents: misses per frame")
+                      "Draw frames 0..N-1 along the scene's camera_path (its static camera without one); caches keep "
+                      "their contents between frames, the table sums all frames, --trace holds every frame, --level "
+                      "adds a table per frame; the image is the last frame")
       ->check(CLI::Range(1u, 10000u));
   command->add_option("--miss-map", options->miss_map,
                       "Draw per pixel the misses of the texture cache (--tcache) its fragments caused (0, 1, 2, 3+; "
@@ -123,7 +124,9 @@ void add_render_command(CLI::App& app) {
       "  rastrace render builtin:bunny -o bunny.png --order tipsy --depth-test late --hiz --zcache "
       "model=attila,size=32KiB --ccache size=8KiB,line=64B,assoc=2,policy=fifo,layout=morton,pixel=4B --json\n"
       "  rastrace render builtin:bunny -o bunny.png --tcache size=32KiB,line=128B,assoc=2,policy=lru,layout=block4 "
-      "--miss-map bunny-misses.png");
+      "--miss-map bunny-misses.png\n"
+      "  rastrace render docs/orbit_scene.json -o orbit.png --frames 30 --trace orbit.rtrace "
+      "--level size=16KiB,line=64B,assoc=4,layout=block4 --level size=1MiB,line=64B,assoc=16");
   command->callback([options] { run_render(*options); });
 }
 

@@ -7,6 +7,7 @@
 #include "cache_sim/cache_spec.h"
 #include "core/error.h"
 #include "experiments/cache_report.h"
+#include "experiments/per_frame_caches.h"
 #include "experiments/replay_tables.h"
 #include "experiments/texture_miss_map.h"
 
@@ -44,6 +45,10 @@ void add_replay_command(CLI::App& app) {
   command->add_option("--miss-map", *miss_map,
                       "Draw per pixel the texture misses of the first texture --cache (0, 1, 2, 3+; legend and cache "
                       "in FILE.txt beside it)");
+  auto per_frame = std::make_shared<bool>(false);
+  command->add_flag("--per-frame", *per_frame,
+                    "One row per frame (of a trace of render --frames N), texture cache and level; the caches keep "
+                    "their contents between frames");
   command->add_flag("--keep-vertex-cache", *keep_vertex_cache,
                     "Keep the post-transform cache across draws (default: empty at each draw)");
   command->footer(
@@ -53,11 +58,18 @@ void add_replay_command(CLI::App& app) {
       "  rastrace replay old.din --cache size=32KiB,line=32B,assoc=2 --format json\n"
       "  rastrace replay frame.rtrace --level size=16KiB,line=128B,sector=32B,assoc=4,layout=block4 \\\n"
       "      --level size=1MiB,line=128B,assoc=16 --units 4 --tile 16 --inclusion inclusive\n"
-      "  rastrace replay frame.rtrace --cache size=32KiB,line=128B,assoc=2,layout=block4 --miss-map misses.png");
+      "  rastrace replay frame.rtrace --cache size=32KiB,line=128B,assoc=2,layout=block4 --miss-map misses.png\n"
+      "  rastrace replay orbit.rtrace --per-frame --level size=16KiB,line=64B,assoc=4,layout=block4 \\\n"
+      "      --level size=1MiB,line=64B,assoc=16");
   command->callback([=] {
     if (specs->empty() && hierarchy->levels.empty())
       throw InputError("replay: expected --cache SPEC or --level SPEC (a hierarchy)");
     const TableFormat table_format = parse_table_format(*format);
+    if (*per_frame) {
+      if (!miss_map->empty()) throw InputError("--per-frame with --miss-map: draw the miss map in a separate replay");
+      write_output(*output, render_table(per_frame_replay_table(*trace, *specs, *hierarchy), table_format));
+      return;
+    }
     const std::vector<Table> tables = replay_tables(*trace, *specs, *keep_vertex_cache, "--cache", true, *hierarchy);
     write_output(*output, render_tables(tables, table_format));
     if (!miss_map->empty()) {

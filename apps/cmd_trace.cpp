@@ -41,6 +41,7 @@ void add_trace_command(CLI::App& app) {
                     {"filter", m.filter},
                     {"tool_version", m.tool_version},
                     {"trace_version", static_cast<std::int64_t>(reader.version())},
+                    {"frames", static_cast<std::int64_t>(reader.frames())},
                     {"textures", static_cast<std::int64_t>(m.textures.size())}};
     t.columns = {{"kind", "records of kind", 0},
                  {"records", "records", 0},
@@ -85,7 +86,9 @@ void add_trace_command(CLI::App& app) {
     TraceReader reader(*verify_path);
     const std::uint64_t records = verify_trace(reader);
     std::cout << *verify_path << ": sound: " << reader.chunks().size() << " chunks, " << records << " records, "
-              << reader.file_bytes() << " bytes\n";
+              << reader.file_bytes() << " bytes";
+    if (reader.frames() > 1) std::cout << ", " << reader.frames() << " frames";
+    std::cout << "\n";
   });
 
   CLI::App* convert = command->add_subcommand("convert", "Convert a trace: .rtrace <-> .csv, .din -> .rtrace or .csv");

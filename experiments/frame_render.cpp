@@ -9,6 +9,7 @@
 #include "cache_sim/vertex_reuse.h"
 #include "core/error.h"
 #include "experiments/frame_traffic.h"
+#include "experiments/per_frame_caches.h"
 #include "experiments/vipm_render.h"
 #include "pipeline/scene_order.h"
 #include "traces/tee_sink.h"
@@ -18,41 +19,65 @@ namespace rastrace {
 
 namespace {
 
-// Frames 2..N drawn into the hierarchy that drew frame 1; one row per frame and level with that
-// frame's share of the counts.
-Table repeated_frames_table(const FrameSpec& spec, const Scene& scene, const RenderOptions& options,
-                            HierarchySink& sink) {
-  std::vector<std::vector<LevelStats>> after = {sink.hierarchy(0).stats()};
-  for (unsigned f = 1; f < spec.frames; ++f) {
-    render_scene(scene, options, &sink);
-    after.push_back(sink.hierarchy(0).stats());
+// Forwards every event but finish(): render_scene finishes its sink after each frame, and the
+// sinks of several frames (the live caches, the trace writer) are finished once, after the last.
+class FramesSink final : public EventSink {
+ public:
+  explicit FramesSink(EventSink& inner) : inner_(inner) {}
+  void begin_frame(std::uint32_t frame) override { inner_.begin_frame(frame); }
+  void begin_draw(const DrawInfo& draw) override { inner_.begin_draw(draw); }
+  void vertex_fetches(std::span<const VertexFetch> fetches) override { inner_.vertex_fetches(fetches); }
+  void texel_accesses(std::span<const TexelAccess> accesses) override { inner_.texel_accesses(accesses); }
+  void framebuffer_accesses(std::span<const FramebufferAccess> accesses) override {
+    inner_.framebuffer_accesses(accesses);
   }
-  Table t;
-  t.title = "Cache hierarchy per frame";
-  t.parameters = {{"scene", spec.flags.scene},
-                  {"frames", spec.frames},
-                  {"camera", "static (the scene's)"},
-                  {"hierarchy", describe(sink.hierarchy(0).config())}};
-  t.columns = {{"frame", "frame", 0},       {"level", "level", 0},
-               {"accesses", "accesses", 0}, {"misses", "misses", 0},
-               {"line_misses", "line misses", 0}, {"bytes_fetched", "bytes from next level", 0}};
-  for (std::size_t f = 0; f < after.size(); ++f)
-    for (std::size_t k = 0; k < after[f].size(); ++k) {
-      const LevelStats& now = after[f][k];
-      const LevelStats before = f ? after[f - 1][k] : LevelStats{};
-      t.add_row({f + 1, "L" + std::to_string(k + 1), now.accesses - before.accesses, now.misses - before.misses,
-                 now.line_misses - before.line_misses, now.bytes_fetched - before.bytes_fetched});
-    }
-  return t;
+  bool wants_framebuffer_events() const override { return inner_.wants_framebuffer_events(); }
+  void end_draw() override { inner_.end_draw(); }
+  void address_accesses(std::span<const AddressAccess> accesses) override { inner_.address_accesses(accesses); }
+  void finish() override {}
+
+ private:
+  EventSink& inner_;
+};
+
+void add_counts(PipelineStats& total, const PipelineStats& p) {
+  total.draws += p.draws;
+  total.lookups += p.lookups;
+  total.vertices_shaded += p.vertices_shaded;
+  total.primitives += p.primitives;
+  total.triangles += p.triangles;
+  total.degenerate += p.degenerate;
+  total.culled += p.culled;
+  total.outside += p.outside;
+  total.clipped += p.clipped;
+  total.rasterized += p.rasterized;
+}
+
+void add_counts(RasterStats& total, const RasterStats& r) {
+  total.triangles += r.triangles;
+  total.quads += r.quads;
+  total.fragments += r.fragments;
+  total.fragments_passed += r.fragments_passed;
+  total.fragments_shaded += r.fragments_shaded;
+  total.fragments_rejected_early += r.fragments_rejected_early;
+  total.quads_rejected_hiz += r.quads_rejected_hiz;
+  total.texel_reads += r.texel_reads;
+}
+
+std::string describe_camera(const Scene& scene) {
+  if (scene.camera_path.empty()) return "static (the scene's)";
+  const std::vector<CameraKeyframe>& keys = scene.camera_path.keyframes;
+  return "path of " + std::to_string(keys.size()) + " keyframes, frames " + std::to_string(keys.front().frame) + ".." +
+         std::to_string(keys.back().frame);
 }
 
 }  // namespace
 
 Frame render_frame(const FrameSpec& spec) {
   if (spec.frames == 0) throw InputError("--frames 0: expected at least one frame");
-  if (spec.frames > 1 && spec.hierarchy.levels.empty())
-    throw InputError("--frames " + std::to_string(spec.frames) +
-                     ": repeated frames are simulated through a cache hierarchy: add --level SPEC (one or more)");
+  if (spec.frames > 1 && spec.miss_map)
+    throw InputError("--miss-map with --frames " + std::to_string(spec.frames) +
+                     ": a miss map is of one frame (replay --miss-map charges a whole trace's misses)");
   const SceneRenderFlags& flags = spec.flags;
   RenderOptions options = render_options_from(flags);
   const VertexCacheSpec vcache = parse_vertex_cache(spec.vcache, "--vcache");
@@ -80,7 +105,8 @@ Frame render_frame(const FrameSpec& spec) {
     options.object_draws = vipm->draws;
     options.draw_objects = vipm->draw_objects;
   }
-  const Scene scene = vipm ? vipm->scene : load_render_scene(flags);
+  Scene scene = vipm ? vipm->scene : load_render_scene(flags);
+  const Camera static_camera = scene.camera;
   if (!vipm) {
     ReorderParams order_params;
     order_params.cache_size = flags.order_cache;
@@ -95,7 +121,9 @@ Frame render_frame(const FrameSpec& spec) {
   std::vector<HierarchySpec> hierarchies;
   if (!spec.hierarchy.levels.empty()) hierarchies.push_back(parse_hierarchy(spec.hierarchy));
   HierarchySink hierarchy_sink(hierarchies, levels);
+  FrameCountsSink frame_counts(hierarchy_sink);
   if (!hierarchies.empty()) sinks.push_back(&hierarchy_sink);
+  if (!hierarchies.empty() && spec.frames > 1) sinks.push_back(&frame_counts);
   std::optional<TextureMissMapSink> miss_map;
   if (spec.miss_map) {
     if (tcache.cache.policy == ReplacementPolicy::Opt)
@@ -112,16 +140,39 @@ Frame render_frame(const FrameSpec& spec) {
       metadata.ordering = "vipm:" + spec.vipm;
       metadata.extra["vipm_lod"] = describe_vipm_lods(vipm->parts);
     }
+    if (spec.frames > 1) {
+      metadata.extra["frames"] = std::to_string(spec.frames);
+      metadata.extra["camera"] = describe_camera(scene);
+    }
     writer.emplace(spec.trace, std::move(metadata));
     sinks.push_back(&*writer);
   }
   TeeSink tee(sinks);
-  Frame frame{render_scene(scene, options, &tee), {}, {}, {}};  // render_scene calls finish() on every sink
+  // Frames 0..N-1 along the scene's camera path; the caches keep their contents between frames.
+  // One frame is drawn exactly as before (no begin_frame: a version 2 trace, the same events).
+  std::optional<RenderResult> last;
+  FramesSink frames_sink(tee);
+  std::uint64_t covered_pixels = 0;
+  for (std::uint32_t f = 0; f < spec.frames; ++f) {
+    scene.camera = camera_at(static_camera, scene.camera_path, f);
+    if (spec.frames > 1) tee.begin_frame(f);
+    RenderResult result = render_scene(scene, options, &frames_sink);
+    covered_pixels += result.framebuffer.covered_pixels();
+    if (last) {
+      add_counts(result.pipeline, last->pipeline);
+      add_counts(result.raster, last->raster);
+    }
+    last = std::move(result);  // the last frame's image, every frame's counts
+  }
+  tee.finish();
+  Frame frame{std::move(*last), {}, {}, {}};
 
   const PipelineStats& p = frame.result.pipeline;
   const RasterStats& r = frame.result.raster;
   const CacheStats& t = bank.texture_stats().at(0);
-  const FrameTraffic traffic = measure_frame_traffic(caches, bank, frame.result);
+  FrameTraffic traffic = measure_frame_traffic(caches, bank, frame.result);
+  traffic.pixels *= spec.frames;  // per pixel of every frame drawn
+  traffic.covered_pixels = covered_pixels;
   const VertexStreamStats& v = bank.vertex_stats().at(0);
   // The live model and the pipeline count the same misses; a warp or batch model is measured by
   // the bank alone (the pipeline shades through its FIFO or LRU of the same entries).
@@ -151,6 +202,13 @@ Frame render_frame(const FrameSpec& spec) {
     table.parameters.emplace_back("vipm_lod", describe_vipm_lods(vipm->parts));
   }
   if (!spec.trace.empty()) table.parameters.emplace_back("trace", spec.trace);
+  if (spec.frames > 1) {
+    table.parameters.emplace_back("frames", static_cast<std::uint64_t>(spec.frames));
+    table.parameters.emplace_back("camera", describe_camera(scene));
+    table.parameters.emplace_back("counts",
+                                  "totals over all frames; caches keep their contents between frames; "
+                                  "per pixel: of width x height x frames");
+  }
   table.columns = {{"triangles", "triangles drawn", 0},
                    {"degenerate", "degenerate", 0},
                    {"culled", "culled", 0},
@@ -181,15 +239,21 @@ Frame render_frame(const FrameSpec& spec) {
     row.push_back(v.lane_slots ? TableCell(v.lane_use()) : TableCell());
   }
   table.add_row(std::move(row));
-  if (!hierarchies.empty())
-    frame.hierarchy.push_back(hierarchy_table({{"scene", flags.scene}, {"raster", flags.raster}, {"order", flags.order}},
-                                              hierarchies.front(), hierarchy_sink.hierarchy(0)));
+  if (!hierarchies.empty()) {
+    TableParameters parameters = {{"scene", flags.scene}, {"raster", flags.raster}, {"order", flags.order}};
+    if (spec.frames > 1) parameters.emplace_back("frames", static_cast<std::uint64_t>(spec.frames));  // totals
+    frame.hierarchy.push_back(hierarchy_table(std::move(parameters), hierarchies.front(), hierarchy_sink.hierarchy(0)));
+  }
   if (miss_map) {
     if (miss_map->map().stats.accesses == 0)
       throw InputError("--miss-map: the frame read no texels (the scene has no textured draw)");
     frame.miss_map = miss_map->map();
   }
-  if (spec.frames > 1) frame.hierarchy.push_back(repeated_frames_table(spec, scene, options, hierarchy_sink));
+  if (!hierarchies.empty() && spec.frames > 1)
+    frame.hierarchy.push_back(per_frame_table({{"scene", flags.scene}, {"raster", flags.raster}, {"order", flags.order},
+                                               {"camera", describe_camera(scene)},
+                                               {"hierarchy", describe(hierarchies.front().hierarchy)}},
+                                              {"hierarchy"}, frame_counts));
   return frame;
 }
 

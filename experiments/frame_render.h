@@ -28,17 +28,19 @@ struct FrameSpec {
   std::string lod;    // collapses done, with vipm
   std::string image;  // where the caller writes the image: stated in the table only
   HierarchyRequest hierarchy;  // render --level ...: a texture cache hierarchy simulated live
-  // render --frames N: the frame drawn N times from the scene's (static) camera through the same
-  // hierarchy, which keeps its contents between frames (the inter-frame reuse of Cox, Bhandari and
-  // Shantz 1998); the table and the trace describe the first frame, the hierarchy table every frame.
+  // render --frames N: frames 0..N-1 along the scene's camera path (its static camera without
+  // one), through caches that keep their contents between frames (the inter-frame reuse of Cox,
+  // Bhandari and Shantz 1998). The table's counts are totals over all frames (its "frames"
+  // parameter says how many), the image is the last frame's, the trace holds every frame
+  // (version 3), and with a hierarchy a "Caches per frame" table follows its totals.
   unsigned frames = 1;
   bool miss_map = false;  // render --miss-map: charge the texture cache's misses to their pixels (frame 1)
 };
 
 struct Frame {
-  RenderResult result;
+  RenderResult result;  // several frames: the last frame's image, the counts of all frames
   Table table;  // one row; title "Frame: <scene>"
-  std::vector<Table> hierarchy;  // with spec.hierarchy: its "Cache hierarchy" table (per frame with frames > 1)
+  std::vector<Table> hierarchy;  // with spec.hierarchy: "Cache hierarchy" (totals), "Caches per frame" (frames > 1)
   std::optional<TextureMissMap> miss_map;  // with spec.miss_map, under the texture cache (tcache)
 };
 

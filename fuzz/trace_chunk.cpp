@@ -38,7 +38,7 @@ RASTRACE_FUZZ_TARGET(trace_chunk) {
   const std::size_t raw_bytes = size - 6;
 
   std::string file(kTraceMagic, 8);
-  file += le(kTraceVersion, 4);
+  file += le(kSingleFrameTraceVersion, 4);
   const std::string json = metadata_to_json(TraceMetadata{});
   file += le(static_cast<std::uint32_t>(json.size()), 4);
   file += json;

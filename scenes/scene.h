@@ -9,19 +9,11 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "scenes/camera_path.h"
 #include "scenes/mesh.h"
 #include "scenes/texture.h"
 
 namespace rastrace {
-
-struct Camera {
-  glm::vec3 eye{0.0f, 0.0f, 3.0f};
-  glm::vec3 target{0.0f, 0.0f, 0.0f};
-  glm::vec3 up{0.0f, 1.0f, 0.0f};
-  float fov_y_degrees = 45.0f;
-  float near_plane = 0.1f;
-  float far_plane = 100.0f;
-};
 
 struct SceneObject {
   Mesh mesh;
@@ -32,7 +24,8 @@ struct Scene {
   std::string name;
   std::vector<SceneObject> objects;
   std::vector<Texture> textures;  // every material's texture, with its mip chain
-  Camera camera;
+  Camera camera;           // the static camera (frame 0 when there is no path)
+  CameraPath camera_path;  // optional: the camera of frame f is camera_at(camera, camera_path, f)
   int width = 512;
   int height = 512;
   glm::vec4 background{0.0f, 0.0f, 0.0f, 1.0f};

@@ -40,7 +40,7 @@ class SceneReader {
 
   Scene read(const json& root) {
     expect_object(root, "scene");
-    allow_keys(root, "scene", {"name", "viewport", "background", "camera", "objects"});
+    allow_keys(root, "scene", {"name", "viewport", "background", "camera", "camera_path", "objects"});
     Scene scene;
     scene.name = root.contains("name") ? string(root["name"], "name") : file_;
     if (root.contains("viewport")) {
@@ -61,6 +61,7 @@ class SceneReader {
       const BoundingBox box = bounding_box(scene);
       scene.camera = frame_bounds(box.lo, box.hi, static_cast<float>(scene.width) / static_cast<float>(scene.height));
     }
+    if (root.contains("camera_path")) scene.camera_path = camera_path(root["camera_path"], scene.camera);
     return scene;
   }
 
@@ -159,6 +160,34 @@ class SceneReader {
     if (glm::length(glm::cross(c.target - c.eye, c.up)) == 0.0f)
       fail("camera.up", "a direction not parallel to the view direction");
     return c;
+  }
+
+  // Keyframes omitting up or fov_y take them from the static camera (`base`).
+  CameraPath camera_path(const json& value, const Camera& base) const {
+    expect_object(value, "camera_path");
+    allow_keys(value, "camera_path", {"keyframes"});
+    const json& keys = required(value, "camera_path", "keyframes");
+    if (!keys.is_array() || keys.empty()) fail("camera_path.keyframes", "a non-empty array of keyframes");
+    CameraPath path;
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      const std::string at = "camera_path.keyframes[" + std::to_string(i) + "]";
+      const json& k = keys[i];
+      expect_object(k, at);
+      allow_keys(k, at, {"frame", "eye", "target", "up", "fov_y"});
+      CameraKeyframe key;
+      key.frame = static_cast<std::uint32_t>(integer(required(k, at, "frame"), at + ".frame", 0, 1000000000));
+      key.eye = vec3(required(k, at, "eye"), at + ".eye");
+      key.target = vec3(required(k, at, "target"), at + ".target");
+      key.up = k.contains("up") ? vec3(k["up"], at + ".up") : base.up;
+      if (!(glm::length(key.up) > 0.0f)) fail(at + ".up", "a non-zero direction");
+      key.up = glm::normalize(key.up);
+      key.fov_y_degrees =
+          k.contains("fov_y") ? static_cast<float>(number(k["fov_y"], at + ".fov_y")) : base.fov_y_degrees;
+      path.keyframes.push_back(key);
+      const std::string error = camera_path_error(path);
+      if (!error.empty()) throw_in_file(file_, "camera_path." + error);
+    }
+    return path;
   }
 
   Mesh procedural_mesh(const json& value, const std::string& where) const {

@@ -47,6 +47,7 @@ class FilterSink final : public EventSink {
  public:
   FilterSink(EventSink& inner, ReplayKinds kinds, Progress* progress)
       : inner_(inner), kinds_(kinds), progress_(progress) {}
+  void begin_frame(std::uint32_t frame) override { inner_.begin_frame(frame); }
   void begin_draw(const DrawInfo& d) override {
     if (kinds_.vertices) inner_.begin_draw(d);
   }

@@ -2,6 +2,7 @@
 // Events arrive in batches so that the per-event cost is a store, not a virtual call.
 #pragma once
 
+#include <cstdint>
 #include <span>
 
 #include "traces/events.h"
@@ -11,6 +12,11 @@ namespace rastrace {
 class EventSink {
  public:
   virtual ~EventSink() = default;
+  // A new frame starts (render --frames N, or a trace holding several frames): frame numbers
+  // start at 0 and never decrease. A single-frame render may never call it. Forwarding sinks
+  // forward it; caches keep their contents across frames (a sink that wants per-frame counts
+  // takes them here).
+  virtual void begin_frame(std::uint32_t /*frame*/) {}
   virtual void begin_draw(const DrawInfo& /*draw*/) {}
   virtual void vertex_fetches(std::span<const VertexFetch> /*fetches*/) {}
   virtual void texel_accesses(std::span<const TexelAccess> /*accesses*/) {}

@@ -2,6 +2,9 @@
 
 namespace rastrace {
 
+void TeeSink::begin_frame(std::uint32_t frame) {
+  for (EventSink* sink : sinks_) sink->begin_frame(frame);
+}
 void TeeSink::begin_draw(const DrawInfo& draw) {
   for (EventSink* sink : sinks_) sink->begin_draw(draw);
 }

@@ -14,6 +14,7 @@ namespace rastrace {
 class TeeSink final : public EventSink {
  public:
   explicit TeeSink(std::vector<EventSink*> sinks) : sinks_(std::move(sinks)) {}
+  void begin_frame(std::uint32_t frame) override;
   void begin_draw(const DrawInfo& draw) override;
   void vertex_fetches(std::span<const VertexFetch> fetches) override;
   void texel_accesses(std::span<const TexelAccess> accesses) override;

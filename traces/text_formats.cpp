@@ -86,6 +86,10 @@ T number(std::string_view text, const std::string& file, std::uint64_t line, con
 }  // namespace
 
 void export_csv(TraceReader& reader, std::ostream& out) {
+  // The CSV has no frame boundaries: read back, it would be one long frame.
+  if (reader.frames() > 1)
+    throw_in_file(reader.path(), "a trace of " + std::to_string(reader.frames()) +
+                                     " frames: CSV has no frame boundaries (replay and sweep read the trace itself)");
   out << kMetadataPrefix << metadata_to_json(reader.metadata()) << '\n' << kCsvHeader << '\n';
   CsvExportSink sink(out);
   replay_trace(reader, sink);

@@ -20,7 +20,8 @@
 
 namespace rastrace {
 
-// Writes every record of the trace as CSV (bounded memory: chunk by chunk).
+// Writes every record of the trace as CSV (bounded memory: chunk by chunk). A trace of several
+// frames is an InputError: CSV has no frame boundaries.
 void export_csv(TraceReader& reader, std::ostream& out);
 // The metadata in a CSV's first line (defaults when the line is absent).
 TraceMetadata read_csv_metadata(const std::string& path);

@@ -1,21 +1,31 @@
-// The rastrace trace container, version 2 (all integers little endian):
+// The rastrace trace container, version 3 (all integers little endian):
 //
 //   header   "RASTRACE" | u32 version | u32 metadata bytes | metadata JSON | u32 CRC32C(JSON)
 //   chunks   32-byte chunk header | payload (zstd frame of the encoded records, chunk_codec.h)
 //              u32 "CHNK" | u8 kind (1 vertex, 2 texel, 3 address, 4 framebuffer) | u8 flags (1 starts a draw,
-//              2 ends it) | u16 0 | u32 records | u32 payload bytes | u32 raw bytes |
+//              2 ends it) | u16 frame | u32 records | u32 payload bytes | u32 raw bytes |
 //              u64 first record (number of the first record among the file's records of this kind)
 //              | u32 CRC32C over the 28 bytes before it and the payload
 //   index    u32 "INDX" | u32 0 | u64 chunk count | per chunk: u64 offset, u64 first record,
-//            u32 records, u8 kind, 3 zero bytes
+//            u32 records, u8 kind, u16 frame, 1 zero byte
 //   footer   u64 index offset | u32 CRC32C(index) | u32 0 | "RTRCEND1"
 //
 // A vertex chunk belongs to one draw; a draw's fetches span one or more chunks. Texel, address and
-// framebuffer chunks hold up to 64 Ki records each.
+// framebuffer chunks hold up to 64 Ki records each. No chunk spans two frames: the writer ends
+// every open chunk when a frame begins (EventSink::begin_frame), and the frame numbers of the
+// chunks of one kind never decrease in file order (the writer's are non-decreasing over the whole
+// file). The chunk header's frame and the index entry's agree, so a reader knows every chunk's
+// frame (and the frame count) from the index alone.
 //
 // Versions: 1 had vertex, texel and address chunks; 2 adds framebuffer chunks (depth-test reads,
 // depth writes and colour writes per 2x2 quad, chunk_codec.h) and changes nothing else, so a
-// reader of version 2 reads version 1 files as they are. The index at the end lets a reader seek to any chunk and
+// reader of version 2 reads version 1 files as they are. 3 adds the frame numbers (0..65535) in
+// the chunk header's and the index entry's formerly reserved u16, which versions 1 and 2 keep
+// zero (their frame is 0 throughout). The writer writes version 2 when every chunk is of frame 0
+// and version 3 when some chunk is of a later frame (render --frames N with N > 1), so
+// single-frame traces are byte for byte those of earlier writers; a reader refuses a version 3
+// file whose chunks are all of frame 0 (the version field is outside every checksum, and 2 and 3
+// differ by one bit). The index at the end lets a reader seek to any chunk and
 // know every count before reading; a file without its footer was not finished (truncated).
 #pragma once
 
@@ -27,7 +37,9 @@ namespace rastrace {
 
 inline constexpr char kTraceMagic[8] = {'R', 'A', 'S', 'T', 'R', 'A', 'C', 'E'};
 inline constexpr char kTraceEndMagic[8] = {'R', 'T', 'R', 'C', 'E', 'N', 'D', '1'};
-inline constexpr std::uint32_t kTraceVersion = 2;        // what the writer writes
+inline constexpr std::uint32_t kTraceVersion = 3;             // the newest the reader reads
+inline constexpr std::uint32_t kSingleFrameTraceVersion = 2;  // what the writer writes for one frame
+inline constexpr std::uint32_t kFramesTraceVersion = 3;       // the first version with frame numbers
 inline constexpr std::uint32_t kOldestTraceVersion = 1;  // the oldest the reader reads
 inline constexpr std::uint32_t kChunkTag = 0x4B4E4843u;  // "CHNK"
 inline constexpr std::uint32_t kIndexTag = 0x58444E49u;  // "INDX"
@@ -46,6 +58,7 @@ struct ChunkInfo {
   std::uint64_t first_record = 0;  // among the records of its kind
   std::uint32_t records = 0;
   RecordKind kind = RecordKind::Vertex;
+  std::uint16_t frame = 0;  // the frame the chunk's records belong to (0 before version 3)
 };
 
 }  // namespace rastrace

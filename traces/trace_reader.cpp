@@ -1,5 +1,6 @@
 #include "traces/trace_reader.h"
 
+#include <algorithm>
 #include <array>
 #include <condition_variable>
 #include <cstdlib>
@@ -65,6 +66,7 @@ struct TraceLayout {
   const std::string& path;
   const std::vector<ChunkInfo>& chunks;
   std::uint64_t index_offset;
+  std::uint32_t version;
 };
 
 // What a chunk's header says, once read_checked_payload() has checked it.
@@ -90,7 +92,13 @@ ChunkHeader read_checked_payload(const TraceLayout& file, ChunkSource& src, std:
   if (load<std::uint32_t>(h) != kChunkTag) throw_at_byte(path, info.offset, where + "bad chunk tag, expected 'CHNK'");
   const std::uint8_t kind = h[4];
   const std::uint8_t flags = h[5];
-  if (h[6] != 0 || h[7] != 0) throw_at_byte(path, info.offset + 6, where + "reserved header bytes are not zero");
+  const std::uint16_t frame = load<std::uint16_t>(h + 6);
+  if (file.version < kFramesTraceVersion && frame != 0)
+    throw_at_byte(path, info.offset + 6, where + "reserved header bytes are not zero");
+  if (frame != info.frame)
+    throw_at_byte(path, info.offset + 6,
+                  where + "frame " + std::to_string(frame) + " disagrees with the chunk index's frame " +
+                      std::to_string(info.frame));
   if ((flags & ~(kChunkStartsDraw | kChunkEndsDraw)) != 0)
     throw_at_byte(path, info.offset + 5, where + "unknown flags " + hex(flags));
   const std::uint32_t records = load<std::uint32_t>(h + 8);
@@ -340,6 +348,7 @@ TraceReader::TraceReader(const std::string& path) : path_(path) {
       load<std::uint32_t>(index.data() + 4) != 0 || count > index.size() / 24 || index.size() != 16 + count * 24)
     throw_at_byte(path, index_offset_, "malformed chunk index");
   std::uint64_t previous_end = header_end;
+  std::uint16_t last_frame[5] = {0, 0, 0, 0, 0};  // per kind
   for (std::uint64_t i = 0; i < count; ++i) {
     const std::uint8_t* e = index.data() + 16 + i * 24;
     ChunkInfo c;
@@ -347,9 +356,12 @@ TraceReader::TraceReader(const std::string& path) : path_(path) {
     c.first_record = load<std::uint64_t>(e + 8);
     c.records = load<std::uint32_t>(e + 16);
     const std::uint8_t kind = e[20];
-    if (e[21] != 0 || e[22] != 0 || e[23] != 0)
+    // Bytes 21-22: the chunk's frame from version 3 on, reserved (zero) before.
+    const bool frames = version_ >= kFramesTraceVersion;
+    if ((!frames && (e[21] != 0 || e[22] != 0)) || e[23] != 0)
       throw_at_byte(path, index_offset_ + 16 + i * 24 + 21,
                     "chunk index entry " + std::to_string(i) + ": reserved bytes are not zero");
+    c.frame = load<std::uint16_t>(e + 21);
     if (kind < 1 || kind > last_kind || c.records > kMaxChunkRecords || c.offset < previous_end ||
         c.offset + kChunkHeaderBytes > index_offset_)
       throw_at_byte(path, index_offset_ + 16 + i * 24, "chunk index entry " + std::to_string(i) + " is invalid");
@@ -357,10 +369,21 @@ TraceReader::TraceReader(const std::string& path) : path_(path) {
     if (c.first_record != counts_[kind])
       throw_at_byte(path, index_offset_ + 16 + i * 24,
                     "chunk index entry " + std::to_string(i) + ": records out of sequence");
+    if (c.frame < last_frame[kind])
+      throw_at_byte(path, c.offset,
+                    "chunk " + std::to_string(i) + ": frame " + std::to_string(c.frame) + " after frame " +
+                        std::to_string(last_frame[kind]) + " in an earlier chunk of its kind (frames never decrease)");
+    last_frame[kind] = c.frame;
+    frames_ = std::max<std::uint32_t>(frames_, c.frame + 1u);
     counts_[kind] += c.records;
     previous_end = c.offset + kChunkHeaderBytes;
     chunks_.push_back(c);
   }
+  if (version_ >= kFramesTraceVersion && frames_ == 1)
+    throw_at_byte(path, 8,
+                  "version " + std::to_string(version_) +
+                      " (several frames) but every chunk is of frame 0: a damaged "
+                      "version field (a single-frame trace is version 2)");
   state_ = std::make_unique<ReadState>(std::move(in_));
   state_->ahead_stream.open(path, std::ios::binary);
 }
@@ -432,7 +455,7 @@ const DecodedChunk& TraceReader::read_chunk(std::size_t i) {
   if (i >= chunks_.size())
     throw std::out_of_range("TraceReader::read_chunk: chunk " + std::to_string(i) + " of " +
                             std::to_string(chunks_.size()));
-  const TraceLayout file{path_, chunks_, index_offset_};
+  const TraceLayout file{path_, chunks_, index_offset_, version_};
   ReadState& s = *state_;
   std::unique_lock lock(s.mutex);
   if (s.held != kNone) {
@@ -507,13 +530,21 @@ void TraceReader::check_chunk(std::size_t i) {
     throw std::out_of_range("TraceReader::check_chunk: chunk " + std::to_string(i) + " of " +
                             std::to_string(chunks_.size()));
   // The caller's stream belongs to the caller's thread; the read-ahead thread has its own.
-  read_checked_payload(TraceLayout{path_, chunks_, index_offset_}, state_->caller, i);
+  read_checked_payload(TraceLayout{path_, chunks_, index_offset_, version_}, state_->caller, i);
 }
 
 void replay_trace(TraceReader& reader, EventSink& sink, ReplayKinds kinds, Progress* progress) {
   reader.set_read_ahead_kinds(kinds);
+  // Version 3 files hold several frames: the sink learns of each before its first chunk (frame 0
+  // included). Frames rise in file order per kind; a kind lagging behind never steps back.
+  const bool frames = reader.version() >= kFramesTraceVersion;
+  std::int64_t frame = -1;
   for (std::size_t i = 0; i < reader.chunks().size(); ++i) {
     const ChunkInfo& info = reader.chunks()[i];
+    if (frames && info.frame > frame) {
+      frame = info.frame;
+      sink.begin_frame(info.frame);
+    }
     const bool wanted = (info.kind == RecordKind::Vertex && kinds.vertices) ||
                         (info.kind == RecordKind::Texel && kinds.texels) ||
                         (info.kind == RecordKind::Address && kinds.addresses) ||

@@ -7,7 +7,8 @@
 //                       through the same bank run the same code.
 // Errors are InputErrors naming the file, the chunk and its byte offset: wrong magic, unknown
 // version, missing footer (truncated file; the truncated chunk is located), checksum mismatch,
-// a chunk whose header disagrees with the index, undecodable records.
+// a chunk whose header disagrees with the index, frames decreasing among a kind's chunks,
+// undecodable records.
 #pragma once
 
 #include <cstdint>
@@ -59,6 +60,8 @@ class TraceReader {
   std::uint64_t file_bytes() const { return file_bytes_; }
   // The container version the file was written in (trace_format.h).
   std::uint32_t version() const { return version_; }
+  // Frames the file holds (the largest chunk frame + 1; 1 before version 3 and for no chunks).
+  std::uint32_t frames() const { return frames_; }
 
   // Reads, checks and decodes chunk i. The result stays valid until the next call. Any order
   // works and gives the same records; a chunk's error is thrown by the call for that chunk.
@@ -94,10 +97,12 @@ class TraceReader {
   std::vector<ChunkInfo> chunks_;
   std::uint64_t counts_[5] = {0, 0, 0, 0, 0};
   std::uint32_t version_ = kTraceVersion;
+  std::uint32_t frames_ = 1;
   std::unique_ptr<ReadState> state_;
 };
 
-// Feeds every chunk of the file into the sink, in file order, then calls sink.finish(). Chunks
+// Feeds every chunk of the file into the sink, in file order, then calls sink.finish(). A file of
+// several frames (version 3) calls sink.begin_frame(f) before the first chunk of each frame f. Chunks
 // of kinds not asked for are still checked (check_chunk), so a damaged file never passes.
 // Progress (when given) advances by records.
 void replay_trace(TraceReader& reader, EventSink& sink, ReplayKinds kinds = {}, Progress* progress = nullptr);

@@ -27,6 +27,11 @@ void put(std::string& out, T value) {
   std::memcpy(bytes, &value, sizeof(T));
   out.append(bytes, sizeof(T));
 }
+void put_version(std::ostream& out, std::uint32_t version) {
+  std::string bytes;
+  put<std::uint32_t>(bytes, version);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
 }  // namespace
 
 // A full chunk on its way to the file: its records of one kind (the other vectors are empty).
@@ -35,6 +40,7 @@ struct TraceWriter::Chunk {
   std::uint8_t flags = 0;
   std::uint32_t records = 0;
   std::uint64_t first_record = 0;
+  std::uint16_t frame = 0;
   DrawInfo draw;
   std::vector<VertexFetch> vertices;
   std::vector<TexelAccess> texels;
@@ -77,14 +83,14 @@ struct TraceWriter::State {
     put<std::uint32_t>(header, kChunkTag);
     put<std::uint8_t>(header, static_cast<std::uint8_t>(chunk.kind));
     put<std::uint8_t>(header, chunk.flags);
-    put<std::uint16_t>(header, 0);
+    put<std::uint16_t>(header, chunk.frame);
     put<std::uint32_t>(header, chunk.records);
     put<std::uint32_t>(header, static_cast<std::uint32_t>(stored));
     put<std::uint32_t>(header, static_cast<std::uint32_t>(raw.size()));
     put<std::uint64_t>(header, chunk.first_record);
     const std::uint32_t crc = crc32c(compressed.data(), stored, crc32c(header.data(), header.size()));
     put<std::uint32_t>(header, crc);
-    index.push_back({offset.load(), chunk.first_record, chunk.records, chunk.kind});
+    index.push_back({offset.load(), chunk.first_record, chunk.records, chunk.kind, chunk.frame});
     write(header.data(), header.size());
     write(compressed.data(), stored);
   }
@@ -152,7 +158,7 @@ TraceWriter::TraceWriter(const std::string& path, TraceMetadata metadata, TraceW
   if (metadata.tool_version.empty()) metadata.tool_version = RASTRACE_VERSION;
   const std::string json = metadata_to_json(metadata);
   std::string header(kTraceMagic, 8);
-  put<std::uint32_t>(header, kTraceVersion);
+  put<std::uint32_t>(header, kSingleFrameTraceVersion);  // finish() makes it 3 for several frames
   put<std::uint32_t>(header, static_cast<std::uint32_t>(json.size()));
   header += json;
   put<std::uint32_t>(header, crc32c(json.data(), json.size()));
@@ -179,6 +185,7 @@ void TraceWriter::submit(Chunk& chunk, RecordKind kind, std::uint8_t flags, std:
   chunk.flags = flags;
   chunk.records = records;
   chunk.first_record = count;
+  chunk.frame = frame_;
   count += records;
   State& state = *state_;
   {
@@ -227,6 +234,19 @@ void TraceWriter::flush_framebuffer() {
   Chunk chunk = take_spare();
   std::swap(chunk.framebuffer, framebuffer_);
   submit(chunk, RecordKind::Framebuffer, 0, records);
+}
+
+void TraceWriter::begin_frame(std::uint32_t frame) {
+  if (finished_) throw std::logic_error("TraceWriter: begin_frame after finish");
+  if (frame < frame_ || frame > 0xFFFFu)
+    throw std::invalid_argument("TraceWriter: frame " + std::to_string(frame) + " after frame " +
+                                std::to_string(frame_) + " (frames increase, at most 65535)");
+  if (frame == frame_) return;
+  if (draw_open_) flush_vertices(true);  // a draw never spans two frames
+  flush_texels();
+  flush_framebuffer();
+  flush_addresses();
+  frame_ = static_cast<std::uint16_t>(frame);
 }
 
 void TraceWriter::begin_draw(const DrawInfo& draw) {
@@ -300,7 +320,8 @@ void TraceWriter::finish() {
     put<std::uint64_t>(index, c.first_record);
     put<std::uint32_t>(index, c.records);
     put<std::uint8_t>(index, static_cast<std::uint8_t>(c.kind));
-    index.append(3, '\0');
+    put<std::uint16_t>(index, c.frame);
+    index.append(1, '\0');
   }
   const std::uint64_t index_offset = state.offset.load();
   std::string footer;
@@ -310,6 +331,17 @@ void TraceWriter::finish() {
   footer.append(kTraceEndMagic, 8);
   state.write(index.data(), index.size());
   state.write(footer.data(), footer.size());
+  // Chunks of a frame after 0 make the file version 3 (its header is that of version 2 but for this
+  // field); a reader refuses version 3 without them, so a bit flip from 2 to 3 cannot pass.
+  bool several_frames = false;
+  for (const ChunkInfo& c : state.index) several_frames |= c.frame > 0;
+  if (several_frames) {
+    std::ofstream& out = state.file.stream();
+    out.seekp(8);
+    put_version(out, kFramesTraceVersion);
+    out.seekp(0, std::ios::end);
+    if (!out) throw_in_file(state.path, "write failed");
+  }
   state.file.commit();
   finished_ = true;
 }

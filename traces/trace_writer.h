@@ -12,6 +12,10 @@
 //   TraceWriter writer("frame.rtrace", meta);
 //   render(scene, writer);   // calls begin_draw / vertex_fetches / texel_accesses / end_draw
 //   writer.finish();
+//
+// Several frames: begin_frame(f) ends every open chunk (no chunk spans two frames) and stamps the
+// chunks after it with f. The file is version 2 while every chunk is of frame 0 and version 3
+// when a chunk of a later frame was written (finish() then sets the header's version), trace_format.h.
 #pragma once
 
 #include <cstdint>
@@ -37,6 +41,8 @@ class TraceWriter : public EventSink {
   TraceWriter(const std::string& path, TraceMetadata metadata, TraceWriterOptions options = {});
   ~TraceWriter() override;
 
+  // Frames never decrease and fit the format's u16; throws std::invalid_argument otherwise.
+  void begin_frame(std::uint32_t frame) override;
   void begin_draw(const DrawInfo& draw) override;
   void vertex_fetches(std::span<const VertexFetch> fetches) override;
   void texel_accesses(std::span<const TexelAccess> accesses) override;
@@ -47,6 +53,8 @@ class TraceWriter : public EventSink {
   // Flushes the last chunks, writes the index and footer, renames the file into place.
   void finish() override;
 
+  // The frame of the chunks being filled; frames written: frame() + 1.
+  std::uint32_t frame() const { return frame_; }
   std::uint64_t records(RecordKind kind) const { return counts_[static_cast<int>(kind)]; }
   // Bytes written so far (the file size once finished).
   std::uint64_t bytes_written() const;
@@ -69,6 +77,7 @@ class TraceWriter : public EventSink {
   TraceWriterOptions options_;
   std::uint64_t counts_[5] = {0, 0, 0, 0, 0};
   bool finished_ = false;
+  std::uint16_t frame_ = 0;
   // Open draw: its info, whether its first chunk has been written.
   bool draw_open_ = false;
   bool draw_started_ = false;

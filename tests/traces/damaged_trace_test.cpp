@@ -100,32 +100,63 @@ class DamagedTrace : public ::testing::Test {
   static inline std::string* small_ = nullptr;
 };
 
-TEST_F(DamagedTrace, EverySingleBitFlipOfASmallRenderedTraceIsAnErrorNamingItsByteAndChunk) {
+// Flips every bit of the trace (or of the bytes of `only`, [first, end) ranges) in turn: each
+// damaged file is an error naming a byte, and the chunk when the bit is inside one.
+void expect_every_bit_flip_named(const std::string& trace,
+                                 std::vector<std::pair<std::uint64_t, std::uint64_t>> only = {}) {
   const TempDir dir;
-  const std::string& trace = small_trace();
   const std::string sound = read_bytes(trace);
   ASSERT_EQ(verify_error(trace), "");
   ASSERT_LT(sound.size(), 4096u) << "keep the exhaustive test small";
   const auto chunks = chunk_ranges(trace);
   ASSERT_GE(chunks.size(), 3u);  // vertex, texel and framebuffer chunks
   const std::string damaged = dir.file("damaged.rtrace");
-  std::uint64_t flips = 0;
-  for (std::size_t byte = 0; byte < sound.size(); ++byte) {
-    for (int bit = 0; bit < 8; ++bit) {
-      std::string bytes = sound;
-      bytes[byte] = static_cast<char>(bytes[byte] ^ (1 << bit));
-      write_bytes(damaged, bytes);
-      const std::string error = verify_error(damaged);
-      ASSERT_THAT(error, HasSubstr(": byte ")) << "bit " << bit << " of byte " << byte << " passed as sound";
-      for (std::size_t c = 0; c < chunks.size(); ++c) {
-        if (byte >= chunks[c].first && byte < chunks[c].second) {
-          ASSERT_THAT(error, HasSubstr("chunk " + std::to_string(c) + ": ")) << "byte " << byte;
+  if (only.empty()) only.emplace_back(0, sound.size());
+  std::uint64_t flips = 0, bytes_flipped = 0;
+  for (const auto& [first, end] : only) {
+    bytes_flipped += end - first;
+    for (std::size_t byte = first; byte < end; ++byte) {
+      for (int bit = 0; bit < 8; ++bit) {
+        std::string bytes = sound;
+        bytes[byte] = static_cast<char>(bytes[byte] ^ (1 << bit));
+        write_bytes(damaged, bytes);
+        const std::string error = verify_error(damaged);
+        ASSERT_THAT(error, HasSubstr(": byte ")) << "bit " << bit << " of byte " << byte << " passed as sound";
+        for (std::size_t c = 0; c < chunks.size(); ++c) {
+          if (byte >= chunks[c].first && byte < chunks[c].second) {
+            ASSERT_THAT(error, HasSubstr("chunk " + std::to_string(c) + ": ")) << "byte " << byte;
+          }
         }
+        ++flips;
       }
-      ++flips;
     }
   }
-  EXPECT_EQ(flips, sound.size() * 8);
+  EXPECT_EQ(flips, bytes_flipped * 8);
+}
+
+TEST_F(DamagedTrace, EverySingleBitFlipOfASmallRenderedTraceIsAnErrorNamingItsByteAndChunk) {
+  expect_every_bit_flip_named(small_trace());
+}
+
+// Version 3: frame numbers in the chunk headers and the index, and a version field one bit from 2.
+TEST_F(DamagedTrace, EverySingleBitFlipOfATwoFrameTraceIsAnErrorNamingItsByteAndChunk) {
+  const TempDir dir;
+  const std::string trace = dir.file("frames.rtrace");
+  const auto run = run_rastrace(
+      {"render", "builtin:grid", "--size", "16x12", "--frames", "2", "-o", dir.file("frame.png"), "--trace", trace});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  // The version field, every chunk header (frame included) and the index with its frames and the
+  // footer; the payloads are damaged like version 2's (the test above).
+  const TraceReader reader(trace);
+  ASSERT_EQ(reader.version(), 3u);
+  ASSERT_EQ(reader.frames(), 2u);
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> ranges = {{8, 12}};
+  for (const ChunkInfo& c : reader.chunks()) ranges.emplace_back(c.offset, c.offset + kChunkHeaderBytes);
+  std::uint64_t index_offset = 0;
+  const std::string bytes = read_bytes(trace);
+  std::memcpy(&index_offset, bytes.data() + bytes.size() - kFooterBytes, 8);
+  ranges.emplace_back(index_offset, bytes.size());
+  expect_every_bit_flip_named(trace, ranges);
 }
 
 TEST_F(DamagedTrace, EveryTruncationOfASmallRenderedTraceIsAnError) {

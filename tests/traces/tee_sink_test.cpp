@@ -13,6 +13,7 @@ namespace {
 // Writes one line per call, with the event's contents, so that the logs compare as strings.
 class LoggingSink final : public EventSink {
  public:
+  void begin_frame(std::uint32_t frame) override { log.push_back("begin_frame " + std::to_string(frame)); }
   void begin_draw(const DrawInfo& draw) override {
     log.push_back("begin_draw " + std::to_string(draw.draw) + " type " + std::to_string(int(draw.type)) + " restart " +
                   (draw.restart_index ? std::to_string(*draw.restart_index) : std::string("none")));
@@ -58,6 +59,7 @@ TEST(TeeSink, ForwardsEveryKindOfEventToEverySinkInOrder) {
   const std::vector<VertexFetch> fetches = {{7, true}, {8, false}, {9, false}};
   const std::vector<TexelAccess> texels = {{1, 2, 30, 40, 5, 6, 0}, {0, 0, 3, 4, 5, 7, 1}};
   const std::vector<AddressAccess> addresses = {{0x1000, 0}, {0x2040, 1}, {0xFFFFFFFFFFull, 2}};
+  sink.begin_frame(4);
   sink.begin_draw(DrawInfo{3, PrimitiveType::TriangleStrip, 65535});
   sink.vertex_fetches(fetches);
   sink.texel_accesses(texels);
@@ -67,6 +69,7 @@ TEST(TeeSink, ForwardsEveryKindOfEventToEverySinkInOrder) {
   sink.finish();
 
   const std::vector<std::string> expected = {
+      "begin_frame 4",
       "begin_draw 3 type 1 restart 65535",
       "vertex_fetches 7* 8 9",
       "texel_accesses t1/l2/30,40@5,6#0 t0/l0/3,4@5,7#1",

@@ -80,7 +80,7 @@ TEST(TraceVersion, Version1FilesStillReadRecordForRecord) {
     import_csv(dir.file("v1.csv"), writer);
   }
   TraceReader converted(dir.file("v2.rtrace"));
-  EXPECT_EQ(converted.version(), kTraceVersion);
+  EXPECT_EQ(converted.version(), kSingleFrameTraceVersion);
   MemorySink back;
   replay_trace(converted, back);
   ASSERT_EQ(back.texels.size(), events.texels.size());
