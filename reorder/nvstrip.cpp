@@ -5,11 +5,11 @@
 #include "reorder/nvstrip.h"
 
 #include <algorithm>
-#include <numeric>
 #include <optional>
 #include <set>
 
 #include "reorder/mesh_topology.h"
+#include "reorder/removable_positions.h"
 #include "reorder/strip.h"
 
 namespace rastrace {
@@ -26,25 +26,6 @@ bool degenerate(const std::uint32_t* c) { return c[0] == c[1] || c[1] == c[2] ||
 // face's edge (b, third) and backward across (b, a).
 struct Start {
   std::uint32_t face, a, b;
-};
-
-// Positions 0..n-1 of an array, some removed for good: first(i) is the first position >= i not
-// removed (n if none), by links with path halving, so runs of removed positions cost amortized
-// nearly nothing however often they are walked past.
-class RemovablePositions {
- public:
-  explicit RemovablePositions(std::uint32_t n) : next_(n + 1) { std::iota(next_.begin(), next_.end(), 0u); }
-  std::uint32_t first(std::uint32_t i) {
-    while (next_[i] != i) {
-      next_[i] = next_[next_[i]];
-      i = next_[i];
-    }
-    return i;
-  }
-  void remove(std::uint32_t i) { next_[i] = i + 1; }
-
- private:
-  std::vector<std::uint32_t> next_;
 };
 
 class Stripifier {
