@@ -314,8 +314,11 @@ std::vector<std::size_t> order_pieces(const Mesh& mesh, const MeshTopology& topo
   const auto cached = [&](std::uint32_t v) { return serial[v] != 0 && pushes - serial[v] < entries; };
   std::vector<std::uint8_t> visited(count, 0);
   std::vector<std::uint32_t> hits(count, 0);  // corners of the piece on cached vertices
-  const auto count_hits = [&](std::uint32_t v, int change) {
-    for (std::uint32_t j = offsets[v]; j < live_end[v]; ++j) hits[vertex_pieces[j]] += std::uint32_t(change);
+  const auto count_hits = [&](std::uint32_t v, bool entered) {
+    for (std::uint32_t j = offsets[v]; j < live_end[v]; ++j) {
+      std::uint32_t& h = hits[vertex_pieces[j]];
+      h = entered ? h + 1 : h - 1;
+    }
   };
   const auto take = [&](std::size_t p) {
     visited[p] = 1;
@@ -325,10 +328,10 @@ std::vector<std::size_t> order_pieces(const Mesh& mesh, const MeshTopology& topo
         const std::uint32_t v = idx[3 * std::size_t(f) + n];
         if (cached(v)) continue;
         ++pushes;
-        if (pushes > entries) count_hits(ring[pushes % entries], -1);  // push pushes - entries leaves
+        if (pushes > entries) count_hits(ring[pushes % entries], false);  // push pushes - entries leaves
         serial[v] = pushes;
         ring[pushes % entries] = v;
-        count_hits(v, +1);
+        count_hits(v, true);
       }
   };
 
