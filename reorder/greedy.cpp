@@ -16,6 +16,7 @@
 #include <type_traits>
 
 #include "core/error.h"
+#include "reorder/removable_positions.h"
 #include "reorder/strip.h"
 
 namespace rastrace {
@@ -201,6 +202,9 @@ constexpr std::uint32_t kNoCorner = kNone;
 // Limits the corners (4 * face + slot, the border face included) and the 32-bit cache clocks,
 // which advance by up to 3 per face for the real order and as much again within a simulation.
 constexpr std::uint32_t kMaxFaces = 1u << 29;
+// A restart from scratch skips the faces of the two largest resident vertices when both are in
+// at least this many faces (see best_cached_face); below it, every face is looked at.
+constexpr std::size_t kFanValence = 64;
 
 template <class Cache>
 class Greedy {
@@ -209,7 +213,9 @@ class Greedy {
       : t_(topology),
         k_(params.cache_size),
         maxnf_(std::is_same_v<Cache, FifoCache> ? k_ + 5 : k_ / 2 + 5),
-        cache_(params.cache_size, topology.vertex_count, 3 * std::size_t(std::min(maxnf_, topology.face_count)) + 3) {
+        cache_(params.cache_size, topology.vertex_count, 3 * std::size_t(std::min(maxnf_, topology.face_count)) + 3),
+        open_edge_faces_(static_cast<std::uint32_t>(topology.edge_faces.size())),
+        repeats_corner_(topology.vertex_count, 0) {
     if (k_ == 0) throw InputError("greedy: cache size 0: expected at least 1 entry");
     const std::uint32_t F = t_.face_count;
     if (F >= kMaxFaces)
@@ -226,6 +232,11 @@ class Greedy {
     faces_.resize(std::size_t(F) + 1);
     faces_[F].mark = kProcessed;
     const std::uint32_t* idx = mesh.indices.data();
+    for (std::uint32_t f = 0; f < F; ++f) {
+      const std::uint32_t* c = idx + 3 * std::size_t(f);
+      if (c[0] == c[1] || c[1] == c[2] || c[0] == c[2])
+        for (int n = 0; n < 3; ++n) repeats_corner_[c[n]] = 1;
+    }
     for (std::uint32_t f = 0; f < F; ++f) {
       FaceRecord& r = faces_[f];
       for (std::uint32_t s = 0; s < 3; ++s) {
@@ -341,6 +352,13 @@ class Greedy {
   void process(std::uint32_t f) {
     faces_[f].mark = kProcessed;
     for (unsigned s = 0; s < 3; ++s) {
+      const std::uint32_t e = t_.face_edges[3 * std::size_t(f) + s];
+      if (e == kNoEdge) continue;
+      const std::span<const std::uint32_t> around = t_.faces_of_edge(e);
+      const auto place = std::lower_bound(around.begin(), around.end(), f) - around.begin();
+      open_edge_faces_.remove(t_.edge_face_offsets[e] + static_cast<std::uint32_t>(place));
+    }
+    for (unsigned s = 0; s < 3; ++s) {
       const std::uint32_t g = t_.neighbor(f, s);
       if (g == kNoFace || processed(g)) continue;
       buckets_[--unvisited_neighbors_[g]].push_back(g);
@@ -357,25 +375,90 @@ class Greedy {
     return kNoFace;
   }
 
-  // Restart from scratch: favour faces with vertices in the cache, then fewest unvisited
-  // neighbours, then the lowest id; enter through a closed edge so the strip turns left next.
-  std::uint32_t initial_corner() {
-    std::uint32_t best = kNoFace;
-    int best_cached = -1, best_neighbors = 4;
-    cache_.for_each_resident([&](std::uint32_t v) {
-      for (const std::uint32_t f : t_.faces_of_vertex(v)) {
-        if (processed(f)) continue;
-        const std::uint32_t* fv = faces_[f].v;
-        const int cached = int(cache_.contains(fv[0])) + int(cache_.contains(fv[1])) + int(cache_.contains(fv[2]));
-        const int neighbors = unvisited_neighbors_[f];
-        if (cached > best_cached ||
-            (cached == best_cached && (neighbors < best_neighbors || (neighbors == best_neighbors && f < best)))) {
-          best = f;
-          best_cached = cached;
-          best_neighbors = neighbors;
-        }
+  // A restart's choice among the faces with vertices in the cache: most cached corners, then
+  // fewest unvisited neighbours, then the lowest id. A total order, so the winner does not depend
+  // on the order faces are offered in, and offering a face with too few cached corners is
+  // harmless once the face itself is also offered with its true count.
+  struct Candidate {
+    std::uint32_t face = kNoFace;
+    int cached = -1, neighbors = 4;
+    void offer(std::uint32_t f, int c, int n) {
+      if (c > cached || (c == cached && (n < neighbors || (n == neighbors && f < face)))) {
+        face = f;
+        cached = c;
+        neighbors = n;
       }
-    });
+    }
+  };
+  void offer_faces_of(std::uint32_t v, Candidate& best) const {
+    for (const std::uint32_t f : t_.faces_of_vertex(v)) {
+      if (processed(f)) continue;
+      const std::uint32_t* fv = faces_[f].v;
+      best.offer(f, int(cache_.contains(fv[0])) + int(cache_.contains(fv[1])) + int(cache_.contains(fv[2])),
+                 unvisited_neighbors_[f]);
+    }
+  }
+  // The unprocessed face on edge (a, b) with the fewest unvisited neighbours, lowest id first.
+  std::uint32_t open_face_of_edge(std::uint32_t a, std::uint32_t b) {
+    const std::uint32_t e = t_.find_edge(a, b);
+    if (e == kNoEdge) return kNoFace;
+    std::uint32_t best = kNoFace;
+    unsigned fewest = 4;
+    const std::uint32_t end = t_.edge_face_offsets[e + 1];
+    for (std::uint32_t j = open_edge_faces_.first(t_.edge_face_offsets[e]); j < end;
+         j = open_edge_faces_.first(j + 1)) {
+      const std::uint32_t f = t_.edge_faces[j];
+      if (unvisited_neighbors_[f] < fewest) {
+        best = f;
+        fewest = unvisited_neighbors_[f];
+        if (fewest == 0) break;  // faces come in increasing id
+      }
+    }
+    return best;
+  }
+
+  // Hoppe's choice over every unprocessed face around the resident vertices. Looking at them all
+  // at every restart is quadratic where two resident vertices a, b share thousands of faces (an
+  // edge fan: every face is its own strip, so every face is a restart). So when a and b, the
+  // resident vertices in the most faces, are both large and in no degenerate face, the faces of
+  // the other resident vertices are offered first. Every face of a or b with a cached corner
+  // elsewhere has then been offered with its true count; the rest have two cached corners (the
+  // faces of edge a-b) or one. So a best with 3 stands; otherwise the best face of edge a-b is
+  // offered with 2, and only if the best still has fewer than 2 are a's and b's faces scanned.
+  std::uint32_t best_cached_face() {
+    resident_.clear();
+    cache_.for_each_resident([&](std::uint32_t v) { resident_.push_back(v); });
+    const auto valence = [&](std::uint32_t v) { return t_.faces_of_vertex(v).size(); };
+    std::uint32_t a = kNone, b = kNone;
+    for (const std::uint32_t v : resident_) {
+      if (a == kNone || valence(v) > valence(a)) {
+        b = a;
+        a = v;
+      } else if (b == kNone || valence(v) > valence(b)) {
+        b = v;
+      }
+    }
+    Candidate best;
+    if (b == kNone || valence(b) < kFanValence || repeats_corner_[a] || repeats_corner_[b]) {
+      for (const std::uint32_t v : resident_) offer_faces_of(v, best);
+      return best.face;
+    }
+    for (const std::uint32_t v : resident_)
+      if (v != a && v != b) offer_faces_of(v, best);
+    if (best.cached == 3) return best.face;
+    const std::uint32_t on_edge = open_face_of_edge(a, b);
+    if (on_edge != kNoFace) best.offer(on_edge, 2, unvisited_neighbors_[on_edge]);
+    if (best.cached >= 2) return best.face;
+    offer_faces_of(a, best);
+    offer_faces_of(b, best);
+    return best.face;
+  }
+
+  // Restart from scratch: favour faces with vertices in the cache (best_cached_face), else the
+  // face with the fewest unvisited neighbours; enter through a closed edge so the strip turns
+  // left next.
+  std::uint32_t initial_corner() {
+    std::uint32_t best = best_cached_face();
     if (best == kNoFace) best = fewest_neighbors_face();
     if (best == kNoFace) return kNoCorner;
     auto closed = [&](std::uint32_t s) {
@@ -478,6 +561,9 @@ class Greedy {
   std::uint32_t border_ = 0;       // the border record's corner
   std::size_t queue_head_ = 0;
   GreedyStats stats_;
+  RemovablePositions open_edge_faces_;        // places in t_.edge_faces of unprocessed faces
+  std::vector<std::uint8_t> repeats_corner_;  // per vertex: in a degenerate face
+  std::vector<std::uint32_t> resident_;       // scratch of best_cached_face
 };
 
 }  // namespace

@@ -6,10 +6,17 @@
 // needs no copy of the cache: the candidate's pushes get serials above the current count in a
 // scratch array stamped per candidate, and every resident test reads that array first. So one
 // candidate costs its fan's corners, not K, and a step costs O(K x fan), as in the paper.
+//
+// That fan is the whole mesh at the centre of a vertex fan, which stays in the cache and would be
+// looked ahead at every step (quadratic). A large fan's look-ahead is skipped when a lower bound
+// of its cost already exceeds the best candidate's, so it could not win: every vertex of the fan
+// outside the cache is pushed at least once, and there are at least
+// (other corners of its live faces) / (most faces the centre shares with one vertex) of them.
 #include "reorder/kcache.h"
 
 #include <algorithm>
 #include <functional>
+#include <optional>
 #include <queue>
 #include <utility>
 
@@ -22,6 +29,8 @@ namespace {
 // Every step scores every resident vertex: larger targets are ordered as this one.
 constexpr std::uint32_t kMaxCache = 1024;
 constexpr std::uint8_t kPending = 2;
+// Vertices in at least this many faces get the look-ahead's lower bound (others are cheap).
+constexpr std::uint32_t kLargeFan = 64;
 
 // The cost 1.0 C1 - 0.5 C2 + 1.3 C3, with C3 = pushes / K, scaled by 10 K: integers, so that
 // ties are exact and the tie rule decides them.
@@ -46,6 +55,7 @@ class KCacheReorder {
       live_[v] = topology_.vertex_face_offsets[v + 1] - topology_.vertex_face_offsets[v];
       if (live_[v] > 0) fewest_.emplace(live_[v], v);
     }
+    bound_fans();
   }
 
   Ordering run() {
@@ -68,6 +78,35 @@ class KCacheReorder {
     return !((i > 0 && c[0] == c[i]) || (i > 1 && c[1] == c[i]));
   }
   const std::uint32_t* corners(std::uint32_t face) const { return idx_ + 3 * std::size_t(face); }
+
+  static unsigned distinct_corners(const std::uint32_t* c) {
+    return 1u + (c[1] != c[0]) + (c[2] != c[0] && c[2] != c[1]);
+  }
+
+  // For the large fans: other_corners_[v], the live faces' distinct corners other than v, and
+  // widest_[v], the most faces v shares with any one other vertex (0 for the small fans).
+  void bound_fans() {
+    other_corners_.assign(topology_.vertex_count, 0);
+    widest_.assign(topology_.vertex_count, 0);
+    std::vector<std::uint32_t> shared(topology_.vertex_count, 0);
+    for (std::uint32_t v = 0; v < topology_.vertex_count; ++v) {
+      if (live_[v] < kLargeFan) continue;
+      for (const std::uint32_t face : topology_.faces_of_vertex(v)) {
+        const std::uint32_t* c = corners(face);
+        other_corners_[v] += distinct_corners(c) - 1;
+        for (int n = 0; n < 3; ++n)
+          if (distinct_corner(c, n) && c[n] != v) widest_[v] = std::max(widest_[v], ++shared[c[n]]);
+      }
+      for (const std::uint32_t face : topology_.faces_of_vertex(v))
+        for (int n = 0; n < 3; ++n) shared[corners(face)[n]] = 0;
+    }
+  }
+  // A lower bound of cost(v): at least ceil(other corners / widest) distinct vertices besides v,
+  // all but the k resident ones pushed; C3 x K at least 1.
+  std::int64_t cost_lower_bound(std::uint32_t v) const {
+    const std::uint32_t others = (other_corners_[v] + widest_[v] - 1) / widest_[v];
+    return scaled_cost(k_, others > k_ ? others - k_ : 0, live_[v], 1);
+  }
 
   // The look-ahead for candidate v: emit v's remaining fan on a copy of the cache.
   std::int64_t cost(std::uint32_t v) {
@@ -93,17 +132,33 @@ class KCacheReorder {
   }
 
   std::uint32_t choose_focus() {
-    std::int64_t best = 0;
-    std::uint32_t focus = 0;
-    bool found = false;
-    // Oldest entry first; `<=` lets the most recently entered win ties.
+    // The candidates, oldest entry first. The small fans are looked ahead first: the best of
+    // them bounds the winner's cost, so a large fan whose lower bound exceeds it is left out.
+    candidates_.clear();
+    std::optional<std::int64_t> best_small;
     const std::uint32_t first = pushes_ >= k_ ? pushes_ - k_ + 1 : 1;
     for (std::uint32_t s = first; s <= pushes_; ++s) {
       const std::uint32_t v = ring_[s % k_];
       if (live_[v] == 0) continue;
+      if (widest_[v] > 0) {
+        candidates_.push_back({v, std::nullopt});
+        continue;
+      }
       const std::int64_t c = cost(v);
-      if (!found || c <= best) {
-        best = c;
+      candidates_.push_back({v, c});
+      if (!best_small || c < *best_small) best_small = c;
+    }
+    std::int64_t best = 0;
+    std::uint32_t focus = 0;
+    bool found = false;
+    // `<=` lets the most recently entered win ties.
+    for (auto& [v, c] : candidates_) {
+      if (!c) {
+        if (best_small && cost_lower_bound(v) > *best_small) continue;  // cannot win
+        c = cost(v);
+      }
+      if (!found || *c <= best) {
+        best = *c;
         focus = v;
         found = true;
       }
@@ -120,8 +175,10 @@ class KCacheReorder {
     ordering_.face_order.push_back(face);
     const std::uint32_t* c = corners(face);
     ordering_.indices.insert(ordering_.indices.end(), c, c + 3);
+    const unsigned others = distinct_corners(c) - 1;
     for (int n = 0; n < 3; ++n) {
       if (!distinct_corner(c, n)) continue;
+      if (widest_[c[n]] > 0) other_corners_[c[n]] -= others;
       if (--live_[c[n]] > 0) fewest_.emplace(live_[c[n]], c[n]);
     }
   }
@@ -172,6 +229,8 @@ class KCacheReorder {
                       std::greater<>>
       fewest_;  // (live faces, vertex), smallest first
   std::vector<std::uint32_t> fan_, completed_;
+  std::vector<std::uint32_t> other_corners_, widest_;                              // bound_fans()
+  std::vector<std::pair<std::uint32_t, std::optional<std::int64_t>>> candidates_;  // choose_focus's scratch
   Ordering ordering_;
 };
 

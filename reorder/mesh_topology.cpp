@@ -24,6 +24,53 @@ std::uint32_t MeshTopology::find_edge(std::uint32_t a, std::uint32_t b) const {
   return kNoEdge;
 }
 
+namespace {
+
+// Buckets up to this size are sorted by insertion (about six entries on a manifold mesh, where
+// std::sort's set-up costs more); larger ones, the centres of fans, by std::sort.
+constexpr std::uint32_t kInsertionSortMax = 32;
+
+// The slots of one edge's run still waiting for a partner, per direction, in run order.
+struct OpenHalfEdges {
+  std::vector<std::uint32_t> slots[2];
+  std::size_t head[2] = {0, 0};
+};
+
+// Pairs the half-edges of one undirected edge (n slots in face order, forward[i]: the slot runs
+// from the lower to the upper vertex) as the greedy rule says: each unpaired slot, in order,
+// takes the first later unpaired slot of the opposite direction in another face. The same pairs
+// come from one sweep: each slot takes the earliest still-open slot of the opposite direction in
+// another face, or waits. That is linear where the greedy search is quadratic on an edge shared
+// by thousands of faces all running the same way (a non-manifold fan). A face holds at most one
+// slot of each direction of an edge, so at most one open slot is passed over.
+void pair_opposite_half_edges(const std::uint64_t* keys, const std::uint8_t* forward, std::uint32_t n,
+                              OpenHalfEdges& open, std::vector<std::uint32_t>& face_neighbors) {
+  for (int d = 0; d < 2; ++d) {
+    open.slots[d].clear();
+    open.head[d] = 0;
+  }
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t s = static_cast<std::uint32_t>(keys[i]);
+    const int d = forward[i];
+    std::vector<std::uint32_t>& waiting = open.slots[1 - d];
+    std::size_t& head = open.head[1 - d];
+    std::size_t j = head;
+    while (j < waiting.size() && waiting[j] / 3 == s / 3) ++j;
+    if (j == waiting.size()) {
+      open.slots[d].push_back(s);
+      continue;
+    }
+    const std::uint32_t partner = waiting[j];
+    face_neighbors[s] = partner / 3;
+    face_neighbors[partner] = s / 3;
+    // Removes waiting[j]: the slots passed over move up one place, keeping their order.
+    for (; j > head; --j) waiting[j] = waiting[j - 1];
+    ++head;
+  }
+}
+
+}  // namespace
+
 MeshTopology build_mesh_topology(const Mesh& mesh) {
   // Validates the indices and fills vertex -> faces (a degenerate face lists a repeated vertex once).
   MeshTopology t = build_vertex_faces(mesh);
@@ -60,6 +107,17 @@ MeshTopology build_mesh_topology(const Mesh& mesh) {
     std::uint64_t* key = keys.data() + bucket_offsets[v];
     std::uint8_t* fwd = forward.data() + bucket_offsets[v];
     const std::uint32_t n = bucket_offsets[v + 1] - bucket_offsets[v];
+    if (n > kInsertionSortMax) {
+      // A vertex in thousands of faces (a fan): insertion sort would be quadratic. The keys are
+      // distinct (the slot is in them), so any sort gives the same order; the direction bytes
+      // are read again from the indices afterwards, once per entry.
+      std::sort(key, key + n);
+      for (std::uint32_t i = 0; i < n; ++i) {
+        const std::size_t s = static_cast<std::uint32_t>(key[i]);
+        fwd[i] = idx[s] < idx[s % 3 == 2 ? s - 2 : s + 1];
+      }
+      continue;
+    }
     for (std::uint32_t i = 1; i < n; ++i) {
       const std::uint64_t k = key[i];
       const std::uint8_t d = fwd[i];
@@ -81,7 +139,7 @@ MeshTopology build_mesh_topology(const Mesh& mesh) {
   t.edge_face_offsets.reserve(keys.size() + 1);
   t.edge_faces.reserve(keys.size());
   t.edge_face_offsets.push_back(0);
-  std::vector<std::uint8_t> paired;  // per entry of the current run
+  OpenHalfEdges open;
   for (std::uint32_t v = 0; v < V; ++v) {
     t.vertex_edge_offsets[v] = t.edge_count();
     std::uint32_t run = bucket_offsets[v];
@@ -100,21 +158,7 @@ MeshTopology build_mesh_topology(const Mesh& mesh) {
           t.edge_faces.push_back(s / 3);
       }
       t.edge_face_offsets.push_back(static_cast<std::uint32_t>(t.edge_faces.size()));
-      // Greedy pairing of opposite half-edges in face order: symmetric by construction. A slot
-      // is only ever paired within its own run.
-      paired.assign(run_end - run, 0);
-      for (std::uint32_t a = run; a < run_end; ++a) {
-        if (paired[a - run]) continue;
-        const std::uint32_t sa = static_cast<std::uint32_t>(keys[a]);
-        for (std::uint32_t b = a + 1; b < run_end; ++b) {
-          const std::uint32_t sb = static_cast<std::uint32_t>(keys[b]);
-          if (paired[b - run] || sb / 3 == sa / 3 || forward[a] == forward[b]) continue;
-          t.face_neighbors[sa] = sb / 3;
-          t.face_neighbors[sb] = sa / 3;
-          paired[a - run] = paired[b - run] = 1;
-          break;
-        }
-      }
+      pair_opposite_half_edges(keys.data() + run, forward.data() + run, run_end - run, open, t.face_neighbors);
       run = run_end;
     }
   }

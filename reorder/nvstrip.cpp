@@ -5,11 +5,11 @@
 #include "reorder/nvstrip.h"
 
 #include <algorithm>
-#include <numeric>
 #include <optional>
 #include <set>
 
 #include "reorder/mesh_topology.h"
+#include "reorder/removable_positions.h"
 #include "reorder/strip.h"
 
 namespace rastrace {
@@ -45,8 +45,8 @@ class Stripifier {
     }
     position_.resize(topology.face_count, 0);
     for (std::uint32_t i = 0; i < faces_.size(); ++i) position_[faces_[i]] = i;
-    skip_.resize(faces_.size() + 1);
-    std::iota(skip_.begin(), skip_.end(), 0u);
+    uncommitted_ = RemovablePositions(static_cast<std::uint32_t>(faces_.size()));
+    index_leads();
   }
 
   // Rounds of experiments until every face is in a committed strip.
@@ -135,16 +135,38 @@ class Stripifier {
 
   // The first position >= i in faces_ whose face is uncommitted, or faces_.size(): the library's
   // linear scan, with the committed runs skipped by path halving (committed faces stay so).
-  std::uint32_t next_uncommitted(std::uint32_t i) {
-    while (skip_[i] != i) {
-      skip_[i] = skip_[skip_[i]];
-      i = skip_[i];
-    }
-    return i;
-  }
+  std::uint32_t next_uncommitted(std::uint32_t i) { return uncommitted_.first(i); }
   void commit(std::uint32_t f) {
     committed_[f] = 1;
-    skip_[position_[f]] = position_[f] + 1;
+    uncommitted_.remove(position_[f]);
+    for (int n = 0; n < 3; ++n)
+      if (lead_position_[3 * std::size_t(f) + n] != kNoFace)
+        uncommitted_leads_.remove(lead_position_[3 * std::size_t(f) + n]);
+  }
+
+  // Per vertex v, the faces around v (in faces_of_vertex order) that have a neighbour across an
+  // edge at v: the only faces traversal() can start the next strip on. Faces without such a
+  // neighbour are left out and committed faces are skipped by links, so a vertex in thousands of
+  // faces that lead nowhere (an edge fan, whose faces have no oriented neighbours) is not
+  // scanned again for every strip of every experiment: that scan made nvstrip quadratic there.
+  void index_leads() {
+    lead_offsets_.assign(std::size_t(topology_.vertex_count) + 1, 0);
+    lead_position_.assign(3 * std::size_t(topology_.face_count), kNoFace);
+    for (std::uint32_t v = 0; v < topology_.vertex_count; ++v) {
+      for (const std::uint32_t h : topology_.faces_of_vertex(v)) {
+        if (committed_[h]) continue;
+        const std::uint32_t* c = corners(h);
+        bool leads = false;
+        for (unsigned e = 0; e < 3; ++e)
+          leads |= (c[e] == v || c[(e + 1) % 3] == v) && topology_.neighbor(h, e) != kNoFace;
+        if (!leads) continue;
+        const int corner = c[0] == v ? 0 : (c[1] == v ? 1 : 2);
+        lead_position_[3 * std::size_t(h) + corner] = static_cast<std::uint32_t>(leads_.size());
+        leads_.push_back(h);
+      }
+      lead_offsets_[v + 1] = static_cast<std::uint32_t>(leads_.size());
+    }
+    uncommitted_leads_ = RemovablePositions(static_cast<std::uint32_t>(leads_.size()));
   }
 
   // One strip from `start`, forward then backward; faces in drawing order.
@@ -188,9 +210,11 @@ class Stripifier {
 
   // The next strip of an experiment starts at an unmarked face around the second vertex of the
   // previous strip's start edge, across an edge from a face outside that strip.
-  std::optional<Start> traversal(const Start& previous, std::uint32_t previous_strip) const {
+  std::optional<Start> traversal(const Start& previous, std::uint32_t previous_strip) {
     const std::uint32_t v = previous.b;
-    for (const std::uint32_t h : topology_.faces_of_vertex(v)) {
+    for (std::uint32_t i = uncommitted_leads_.first(lead_offsets_[v]); i < lead_offsets_[v + 1];
+         i = uncommitted_leads_.first(i + 1)) {
+      const std::uint32_t h = leads_[i];
       if (marked(h)) continue;
       const std::uint32_t* c = corners(h);
       for (unsigned e = 0; e < 3; ++e) {
@@ -226,7 +250,11 @@ class Stripifier {
   const MeshTopology& topology_;
   std::vector<std::uint32_t> faces_;  // the non-degenerate faces, in input order
   std::vector<std::uint8_t> committed_;
-  std::vector<std::uint32_t> position_, skip_;  // face -> its place in faces_; next_uncommitted's links
+  std::vector<std::uint32_t> position_;  // face -> its place in faces_
+  RemovablePositions uncommitted_{0};    // places in faces_ of uncommitted faces
+  // index_leads(): CSR vertex -> faces, the place of face f's corner n in leads_ (or kNoFace).
+  std::vector<std::uint32_t> lead_offsets_, leads_, lead_position_;
+  RemovablePositions uncommitted_leads_{0};
   // Stamps: the experiment and the strip that last took a face, the strip that last took a vertex.
   std::vector<std::uint32_t> experiment_of_, strip_of_, vertex_strip_;
   std::uint32_t experiment_ = 0, strip_ = 0;
@@ -256,6 +284,12 @@ std::vector<std::vector<std::uint32_t>> cut(const std::vector<std::vector<std::u
 // Orders the pieces greedily against a FIFO of `entries`: first the piece with the fewest
 // neighbours per face, then always the piece with the most cache hits per face (the first on
 // ties; with no hits at all, the first piece left).
+//
+// Each step looks at the pieces on the cached vertices. A piece's hits are kept up to date as
+// vertices enter and leave the FIFO rather than recounted over its faces for every look, and
+// taken pieces are dropped from the vertex lists as they are met (the tie rule compares piece
+// numbers, so the lists' order does not matter): around a vertex shared by thousands of
+// one-face pieces (an edge fan) each step otherwise re-read every piece ever placed there.
 std::vector<std::size_t> order_pieces(const Mesh& mesh, const MeshTopology& topology,
                                       const std::vector<std::vector<std::uint32_t>>& pieces, std::uint32_t entries) {
   const std::size_t count = pieces.size();
@@ -272,12 +306,20 @@ std::vector<std::size_t> order_pieces(const Mesh& mesh, const MeshTopology& topo
   for (std::size_t p = 0; p < count; ++p)
     for (const std::uint32_t f : pieces[p])
       for (int n = 0; n < 3; ++n) vertex_pieces[fill[idx[3 * std::size_t(f) + n]]++] = std::uint32_t(p);
+  std::vector<std::uint32_t>& live_end = fill;  // vertex v's untaken pieces: offsets[v]..live_end[v]
 
   // The FIFO as push serials: v is cached while pushes - serial[v] < entries.
   std::vector<std::uint32_t> serial(topology.vertex_count, 0), ring(entries, 0);
   std::uint32_t pushes = 0;
   const auto cached = [&](std::uint32_t v) { return serial[v] != 0 && pushes - serial[v] < entries; };
   std::vector<std::uint8_t> visited(count, 0);
+  std::vector<std::uint32_t> hits(count, 0);  // corners of the piece on cached vertices
+  const auto count_hits = [&](std::uint32_t v, bool entered) {
+    for (std::uint32_t j = offsets[v]; j < live_end[v]; ++j) {
+      std::uint32_t& h = hits[vertex_pieces[j]];
+      h = entered ? h + 1 : h - 1;
+    }
+  };
   const auto take = [&](std::size_t p) {
     visited[p] = 1;
     order.push_back(p);
@@ -285,8 +327,11 @@ std::vector<std::size_t> order_pieces(const Mesh& mesh, const MeshTopology& topo
       for (int n = 0; n < 3; ++n) {
         const std::uint32_t v = idx[3 * std::size_t(f) + n];
         if (cached(v)) continue;
-        serial[v] = ++pushes;
+        ++pushes;
+        if (pushes > entries) count_hits(ring[pushes % entries], false);  // push pushes - entries leaves
+        serial[v] = pushes;
         ring[pushes % entries] = v;
+        count_hits(v, true);
       }
   };
 
@@ -311,19 +356,21 @@ std::vector<std::size_t> order_pieces(const Mesh& mesh, const MeshTopology& topo
     const std::uint32_t oldest = pushes >= entries ? pushes - entries + 1 : 1;
     for (std::uint32_t s = oldest; s <= pushes; ++s) {
       const std::uint32_t v = ring[s % entries];
-      for (std::uint32_t j = offsets[v]; j < offsets[v + 1]; ++j) {
+      for (std::uint32_t j = offsets[v]; j < live_end[v];) {
         const std::uint32_t p = vertex_pieces[j];
-        if (visited[p] || seen[p] == step) continue;
+        if (visited[p]) {
+          vertex_pieces[j] = vertex_pieces[--live_end[v]];
+          continue;
+        }
+        ++j;
+        if (seen[p] == step) continue;
         seen[p] = step;
-        std::size_t hits = 0;
-        for (const std::uint32_t f : pieces[p])
-          for (int n = 0; n < 3; ++n) hits += cached(idx[3 * std::size_t(f) + n]);
-        const std::size_t faces = pieces[p].size();
-        // hits / faces against best_hits / best_faces, exactly; lower index first on ties.
-        if (best == count || hits * best_faces > best_hits * faces ||
-            (hits * best_faces == best_hits * faces && p < best)) {
+        const std::size_t piece_hits = hits[p], faces = pieces[p].size();
+        // piece_hits / faces against best_hits / best_faces, exactly; lower index first on ties.
+        if (best == count || piece_hits * best_faces > best_hits * faces ||
+            (piece_hits * best_faces == best_hits * faces && p < best)) {
           best = p;
-          best_hits = hits;
+          best_hits = piece_hits;
           best_faces = faces;
         }
       }

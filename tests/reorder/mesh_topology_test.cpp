@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "scenes/procedural.h"
+#include "tests/support/pathological_meshes.h"
 
 namespace rastrace {
 namespace {
@@ -91,6 +92,40 @@ TEST(MeshTopology, OutOfRangeIndexIsAnInputErrorNamingTheFace) {
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find("face 1: vertex index 7 >= vertex count 3"), std::string::npos)
         << error.what();
+  }
+}
+
+// The rule face_neighbors documents, checked by its definition: for every edge, each unpaired
+// half-edge in face order takes the first later unpaired half-edge of the opposite direction in
+// another face. The builder pairs by a linear sweep; here the quadratic search is the reference,
+// on meshes whose edges are shared by thousands of faces, by duplicated faces and by faces that
+// use an edge twice.
+TEST(MeshTopology, NonManifoldEdgesArePairedGreedilyInFaceOrder) {
+  auto meshes = testing::pathological_meshes(3000);
+  meshes.emplace_back("edge-used-twice", mesh_of({0, 1, 0, 1, 0, 2, 0, 1, 3, 1, 0, 1, 2, 1, 0, 0, 1, 4}, 5));
+  for (const auto& [name, mesh] : meshes) {
+    const MeshTopology t = build_mesh_topology(mesh);
+    std::vector<std::uint32_t> expected(3 * std::size_t(t.face_count), kNoFace);
+    std::vector<std::vector<std::uint32_t>> slots_of_edge(t.edge_count());
+    for (std::uint32_t s = 0; s < 3 * t.face_count; ++s)
+      if (t.face_edges[s] != kNoEdge) slots_of_edge[t.face_edges[s]].push_back(s);
+    const auto forward = [&](std::uint32_t s) {
+      return mesh.indices[s] < mesh.indices[s % 3 == 2 ? s - 2 : s + 1];
+    };
+    for (const std::vector<std::uint32_t>& slots : slots_of_edge) {
+      std::vector<bool> paired(slots.size(), false);
+      for (std::size_t a = 0; a < slots.size(); ++a) {
+        if (paired[a]) continue;
+        for (std::size_t b = a + 1; b < slots.size(); ++b) {
+          if (paired[b] || slots[a] / 3 == slots[b] / 3 || forward(slots[a]) == forward(slots[b])) continue;
+          expected[slots[a]] = slots[b] / 3;
+          expected[slots[b]] = slots[a] / 3;
+          paired[a] = paired[b] = true;
+          break;
+        }
+      }
+    }
+    EXPECT_EQ(t.face_neighbors, expected) << name;
   }
 }
 
