@@ -40,30 +40,6 @@ class FramesSink final : public EventSink {
   EventSink& inner_;
 };
 
-void add_counts(PipelineStats& total, const PipelineStats& p) {
-  total.draws += p.draws;
-  total.lookups += p.lookups;
-  total.vertices_shaded += p.vertices_shaded;
-  total.primitives += p.primitives;
-  total.triangles += p.triangles;
-  total.degenerate += p.degenerate;
-  total.culled += p.culled;
-  total.outside += p.outside;
-  total.clipped += p.clipped;
-  total.rasterized += p.rasterized;
-}
-
-void add_counts(RasterStats& total, const RasterStats& r) {
-  total.triangles += r.triangles;
-  total.quads += r.quads;
-  total.fragments += r.fragments;
-  total.fragments_passed += r.fragments_passed;
-  total.fragments_shaded += r.fragments_shaded;
-  total.fragments_rejected_early += r.fragments_rejected_early;
-  total.quads_rejected_hiz += r.quads_rejected_hiz;
-  total.texel_reads += r.texel_reads;
-}
-
 std::string describe_camera(const Scene& scene) {
   if (scene.camera_path.empty()) return "static (the scene's)";
   const std::vector<CameraKeyframe>& keys = scene.camera_path.keyframes;
@@ -159,8 +135,8 @@ Frame render_frame(const FrameSpec& spec) {
     RenderResult result = render_scene(scene, options, &frames_sink);
     covered_pixels += result.framebuffer.covered_pixels();
     if (last) {
-      add_counts(result.pipeline, last->pipeline);
-      add_counts(result.raster, last->raster);
+      result.pipeline += last->pipeline;
+      result.raster += last->raster;
     }
     last = std::move(result);  // the last frame's image, every frame's counts
   }

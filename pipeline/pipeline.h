@@ -66,6 +66,20 @@ struct PipelineStats {
   std::uint64_t clipped = 0;     // triangles that needed clipping
   std::uint64_t rasterized = 0;  // triangles handed to the rasterizer (after clipping)
   double acmr() const { return triangles ? double(vertices_shaded) / double(triangles) : 0.0; }
+  // Every count summed (frames drawn one after another).
+  PipelineStats& operator+=(const PipelineStats& p) {
+    draws += p.draws;
+    lookups += p.lookups;
+    vertices_shaded += p.vertices_shaded;
+    primitives += p.primitives;
+    triangles += p.triangles;
+    degenerate += p.degenerate;
+    culled += p.culled;
+    outside += p.outside;
+    clipped += p.clipped;
+    rasterized += p.rasterized;
+    return *this;
+  }
 };
 
 // Every primitive as assembled, before clipping: for the adjacency edge stage and other probes.

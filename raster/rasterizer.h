@@ -69,6 +69,18 @@ struct RasterStats {
   std::uint64_t fragments_rejected_early = 0;  // by the early test or hierarchical Z, before shading
   std::uint64_t quads_rejected_hiz = 0;        // by hierarchical Z, without a depth read
   std::uint64_t texel_reads = 0;
+  // Every count summed (frames drawn one after another).
+  RasterStats& operator+=(const RasterStats& r) {
+    triangles += r.triangles;
+    quads += r.quads;
+    fragments += r.fragments;
+    fragments_passed += r.fragments_passed;
+    fragments_shaded += r.fragments_shaded;
+    fragments_rejected_early += r.fragments_rejected_early;
+    quads_rejected_hiz += r.quads_rejected_hiz;
+    texel_reads += r.texel_reads;
+    return *this;
+  }
 };
 
 class HierarchicalZ;
