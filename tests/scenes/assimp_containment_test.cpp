@@ -1,5 +1,7 @@
 // libassimp's own crashes stay outside rastrace: the assimp loader reads a file first in a child
 // process (scenes/assimp_io.cpp), so a file that crashes libassimp is an InputError naming it.
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include <gmock/gmock.h>
@@ -7,6 +9,7 @@
 
 #include "core/error.h"
 #include "scenes/mesh_io.h"
+#include "tests/support/temp_dir.h"
 #include "tests/support/test_data.h"
 
 namespace rastrace {
@@ -30,6 +33,30 @@ TEST(AssimpContainment, AModelThatCrashesLibassimpIsAnErrorNamingTheFile) {
 TEST(AssimpContainment, TheUndamagedModelStillLoads) {
   const Mesh mesh = load_mesh(testing::data_file("assimp/ASE/RotatingCube.ASE"));
   EXPECT_EQ(mesh.indices.size(), 36u);
+}
+
+// assimp's cube_triangulate.dae with its <triangles count="12"> changed to 1.5 billion: assimp
+// sizes its buffers by the count before reading the indices. The child's address-space limit
+// (or, under AddressSanitizer, its allocator) stops it: an error naming the file, at once, and
+// rastrace's own memory never grows.
+TEST(AssimpContainment, AColladaFileClaimingBillionsOfTrianglesIsAnErrorNamingTheFile) {
+  std::ifstream in(testing::data_file("assimp/Collada/cube_triangulate.dae"));
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string dae = text.str();
+  const std::string count = "<triangles count=\"12\"";
+  const std::size_t at = dae.find(count);
+  ASSERT_NE(at, std::string::npos);
+  dae.replace(at, count.size(), "<triangles count=\"1500000000\"");
+  const testing::TempDir dir;
+  const std::string path = dir.file("cube-billions.dae");
+  std::ofstream(path) << dae;
+  try {
+    load_mesh(path);
+    FAIL() << "loaded a model of 1.5 billion triangles from 9 KB";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr(path + ": assimp "));
+  }
 }
 
 }  // namespace
