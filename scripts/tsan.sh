@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # ThreadSanitizer over the code that runs threads: the trace reader's read-ahead thread
-# (traces/trace_reader.cpp; the ReadAhead tests) and the parallel sweep's workers, each of which
-# replays with its own read-ahead (cache_sim/sweep.cpp; ParallelSweep). Own build in build-tsan/.
+# (traces/trace_reader.cpp; the ReadAhead tests), the trace writer's compression thread
+# (traces/trace_writer.cpp), the parallel sweep's workers, each of which replays with its own
+# read-ahead (cache_sim/sweep.cpp; ParallelSweep), and the multi-threaded renderer's tile workers
+# (raster/worker_pool.cpp; the RenderIdentity tests at 2 and 4 threads, which also write traces
+# through the writer's thread). Own build in build-tsan/.
 # Only the two test executables and the libraries they link are built: their `/fast` make
 # targets skip the dependency on the rastrace tool, which these tests do not run.
 # Fails on any data race, lock-order inversion or test failure.
@@ -20,8 +23,8 @@ start=$(date +%s)
 mkdir -p "$dir"
 cmake -S "$here" -B "$dir" "${flags[@]}" >"$dir/configure.log" 2>&1 || { cat "$dir/configure.log" >&2; exit 1; }
 {
-  nice cmake --build "$dir" -j"$(nproc)" --target core traces scenes cache_sim &&
-    nice make -C "$dir" -j"$(nproc)" test_traces/fast test_cache_sim/fast
+  nice cmake --build "$dir" -j"$(nproc)" --target core traces scenes cache_sim raster pipeline reorder &&
+    nice make -C "$dir" -j"$(nproc)" test_traces/fast test_cache_sim/fast test_pipeline/fast
 } >"$dir/build.log" 2>&1 || { grep -E 'error|Error' "$dir/build.log" | head -30 >&2; exit 1; }
 echo "tsan: built in $(($(date +%s) - start)) s" >&2
 # halt_on_error: the first report fails the run; second_deadlock_stack: both stacks of an inversion.
@@ -29,4 +32,5 @@ export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 ${TSAN_OPTIONS:-}"
 export RASTRACE_READ_AHEAD=1
 "$dir/tests/test_traces" --gtest_filter='ReadAhead.*:TraceFile*' --gtest_brief=1
 "$dir/tests/test_cache_sim" --gtest_filter='ParallelSweep.*:LiveBank*' --gtest_brief=1
+"$dir/tests/test_pipeline" --gtest_filter='RenderIdentity.TwoThreads*:RenderIdentity.FourThreads*' --gtest_brief=1
 echo "tsan: no report, total $(($(date +%s) - start)) s" >&2
