@@ -50,6 +50,8 @@ const Pinned kPinned[] = {
     {"texgroup", "bunny00", 1512687614768160072ull},      {"texgroup", "fandisk", 5168684695811071504ull},
     {"texgroup", "triceratops", 17433766058431235345ull}, {"forsyth", "bunny00", 13274104722757043402ull},
     {"forsyth", "fandisk", 3367951236812519780ull},       {"forsyth", "triceratops", 8856306872058004249ull},
+    {"batch", "bunny00", 14898770109992831132ull},        {"batch", "fandisk", 5486493083359157678ull},
+    {"batch", "triceratops", 9432946206663562563ull},
 };
 
 void expect_pinned(const Pinned& pinned, const Mesh& mesh) {
@@ -77,7 +79,12 @@ const Pinned kPinnedPathological[] = {
     {"kcache", "edge-fan", 15095144065545032245ull},      {"kcache", "vertex-fan", 4743481475737401413ull},
     {"forsyth", "degenerate", 12903751938181550699ull},   {"forsyth", "duplicates", 952500771244008833ull},
     {"forsyth", "few-vertices", 8916589332071759822ull},  {"forsyth", "edge-fan", 14401335999471319901ull},
-    {"forsyth", "vertex-fan", 4743481475737401413ull},
+    {"forsyth", "vertex-fan", 4743481475737401413ull},    {"batch", "degenerate", 5633010833280311027ull},
+    {"batch", "duplicates", 12778154044136606569ull},     {"batch", "few-vertices", 12155221474730417854ull},
+    {"batch", "edge-fan", 15095144065545032245ull},       {"batch", "vertex-fan", 4743481475737401413ull},
+    {"texgroup", "degenerate", 2947936399078345770ull},   {"texgroup", "duplicates", 1120473868756242280ull},
+    {"texgroup", "few-vertices", 3219744234114437317ull}, {"texgroup", "edge-fan", 14174835857849239224ull},
+    {"texgroup", "vertex-fan", 13132902520228948338ull},
 };
 
 TEST(OrdersOnRealMeshes, FasterOrderingsDrawTheSameStreamsOnPathologicalMeshes) {
