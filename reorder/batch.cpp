@@ -61,32 +61,43 @@ std::uint64_t pack_score(std::uint64_t cost, std::uint64_t border, std::uint64_t
 // not reach), so each slot is dropped once in all and a walk costs what it visits.
 class LiveFaceLists {
  public:
-  explicit LiveFaceLists(const MeshTopology& topology)
-      : faces_(topology.vertex_faces),
+  LiveFaceLists(const MeshTopology& topology, const std::uint32_t* indices)
+      : entries_(topology.vertex_faces.size()),
         begin_(topology.vertex_face_offsets.begin(), topology.vertex_face_offsets.end() - 1),
-        end_(topology.vertex_face_offsets.begin() + 1, topology.vertex_face_offsets.end()) {}
+        end_(topology.vertex_face_offsets.begin() + 1, topology.vertex_face_offsets.end()) {
+    for (std::size_t j = 0; j < entries_.size(); ++j) {
+      const std::uint32_t f = topology.vertex_faces[j];
+      const std::uint32_t* c = indices + 3 * std::size_t(f);
+      entries_[j] = {f, {c[0], c[1], c[2]}};
+    }
+  }
 
-  // Calls visit(f) for v's live faces in increasing id until it returns false.
+  // Calls visit(f, corners of f) for v's live faces in increasing id until it returns false.
   template <typename Visit>
   void walk(std::uint32_t v, const std::vector<std::uint8_t>& emitted, Visit&& visit) {
-    std::uint32_t* const faces = faces_.data();
+    Entry* const entries = entries_.data();
     const std::uint32_t begin = begin_[v], end = end_[v];
     std::uint32_t kept = begin;
     for (std::uint32_t at = begin; at < end; ++at) {
-      const std::uint32_t f = faces[at];
-      if (emitted[f]) continue;
-      if (!visit(f)) {
-        std::copy_backward(faces + begin, faces + kept, faces + at);
+      const Entry e = entries[at];
+      if (emitted[e.face]) continue;
+      if (!visit(e.face, e.corners)) {
+        std::copy_backward(entries + begin, entries + kept, entries + at);
         begin_[v] = at - (kept - begin);
         return;
       }
-      faces[kept++] = f;
+      entries[kept++] = e;
     }
     end_[v] = kept;
   }
 
  private:
-  std::vector<std::uint32_t> faces_;
+  // A face and its corners, so a walk reads no index buffer.
+  struct Entry {
+    std::uint32_t face;
+    std::uint32_t corners[3];
+  };
+  std::vector<Entry> entries_;
   std::vector<std::uint32_t> begin_, end_;
 };
 
@@ -106,7 +117,7 @@ Ordering reorder_batch(const Mesh& mesh, const ReorderParams&) {
     live[v] = topology.vertex_face_offsets[v + 1] - topology.vertex_face_offsets[v];
     for (const std::uint32_t f : topology.faces_of_vertex(v)) live_degenerate[v] += degenerate(f);
   }
-  LiveFaceLists live_faces(topology);
+  LiveFaceLists live_faces(topology, idx);
   std::vector<std::uint8_t> emitted(face_count, 0);
   std::vector<std::uint64_t> in_batch(vertex_count, 0);  // the batch number (1-based) a vertex was last in
   std::vector<std::uint64_t> last_use(vertex_count, 0);  // stream position of the vertex's last use
@@ -202,7 +213,7 @@ Ordering reorder_batch(const Mesh& mesh, const ReorderParams&) {
           large.push_back({0, 0, v});
           continue;
         }
-        live_faces.walk(v, emitted, [&](std::uint32_t f) {
+        live_faces.walk(v, emitted, [&](std::uint32_t f, const std::uint32_t*) {
           consider(f);
           return true;
         });
@@ -257,11 +268,10 @@ Ordering reorder_batch(const Mesh& mesh, const ReorderParams&) {
       });
       for (const LargeFan& fan : large) {
         if (batch_invocations + fan.min_cost > batch_vertex_limit) continue;  // none fits
-        live_faces.walk(fan.vertex, emitted, [&](std::uint32_t f) {
+        live_faces.walk(fan.vertex, emitted, [&](std::uint32_t f, const std::uint32_t* c) {
           if (fan.bound > best_score || (fan.bound == best_score && f > best)) return false;
           // Its border and the corners that cannot be reused (the oldest possible age) already
           // lose: not scored.
-          const std::uint32_t* c = idx + 3 * std::size_t(f);
           const std::uint64_t border = std::uint64_t{live[c[0]]} + live[c[1]] + live[c[2]];
           if (pack_score(0, border, kWindow) > best_score) return true;
           if (pack_score(new_corners(c), border, kWindow) > best_score) return true;
@@ -279,7 +289,7 @@ Ordering reorder_batch(const Mesh& mesh, const ReorderParams&) {
         for (const std::uint32_t v : *around)
           if (live[v] > 0 && (seed_vertex == vertex_count || live[v] < live[seed_vertex])) seed_vertex = v;
       if (seed_vertex != vertex_count) {
-        live_faces.walk(seed_vertex, emitted, [&](std::uint32_t f) {
+        live_faces.walk(seed_vertex, emitted, [&](std::uint32_t f, const std::uint32_t*) {
           best = f;
           return false;
         });
