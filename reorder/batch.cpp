@@ -82,7 +82,7 @@ class LiveFaceLists {
       const Entry e = entries[at];
       if (emitted[e.face]) continue;
       if (!visit(e.face, e.corners)) {
-        std::copy_backward(entries + begin, entries + kept, entries + at);
+        if (kept != at) std::copy_backward(entries + begin, entries + kept, entries + at);
         begin_[v] = at - (kept - begin);
         return;
       }
