@@ -13,6 +13,17 @@
 // the most recently evicted vertex that still has triangles is resumed (its best triangle), and
 // failing that the next live triangle in input order, which keeps the method linear.
 //
+// A vertex in more live triangles than the model cache has entries offers only the first 32 of
+// them (in its segment's order) as candidates, when it is cached and when it is resumed after a
+// dead end; the rest stay reachable through their other vertices and come forward as the
+// vertex's triangles are emitted. Without the cap every step rescored every live triangle of
+// every cached vertex (the cached vertices' scores all move with the LRU), which is quadratic
+// when a vertex is in thousands of triangles (an edge or a vertex shared by every face, a mesh
+// on a few vertices: bench/pathological.cpp). Such a vertex's valence boost is negligible and its
+// cache score is shared by all its triangles, so the ranking among them rests on their other
+// corners. Manifold-like meshes have valences far below 32 (at most 11 on the CGAL meshes), so
+// their orders are unchanged; tests/reorder/orders_on_real_meshes_test.cpp pins them.
+//
 // Parameters: none that change the order (cache size and policy are ignored; 32 is the
 // model). ACMR on real meshes about 0.63-0.75 at FIFO 16. Deterministic.
 #include <algorithm>
@@ -36,6 +47,10 @@ constexpr float kLastTriangleScore = 0.75f;
 constexpr float kValenceBoostScale = 2.0f;
 constexpr float kValenceBoostPower = 0.5f;
 constexpr std::uint32_t kValenceTable = 64;
+// A vertex offers at most this many of its live triangles as candidates (the first ones of its
+// segment); see the file comment. Above any valence of a manifold-like mesh (at most 11 on the
+// CGAL meshes of docs/PERFORMANCE.md), so only vertices in thousands of triangles are affected.
+constexpr std::uint32_t kCandidatesPerVertex = kModelCache;
 
 // Every vertex score the loop needs, by LRU position (-1: not cached) and live triangle count,
 // each computed once here by the same float operations as the formula: position p's term plus
@@ -109,6 +124,13 @@ Ordering reorder_forsyth(const Mesh& mesh, const ReorderParams& /*params*/) {
   }
   std::vector<std::uint32_t> live(vertex_count);
   for (std::uint32_t v = 0; v < vertex_count; ++v) live[v] = offsets[v + 1] - offsets[v];
+  // Where each face sits in the segment of the vertex at its corner k (first corner of a repeated
+  // vertex): an emitted face is swapped out of a segment of thousands of faces in O(1).
+  const auto corner_of = [](const Entry& e, std::uint32_t v) { return e.v0 == v ? 0u : e.v1 == v ? 1u : 2u; };
+  std::vector<std::uint32_t> slot_of(3 * std::size_t(face_count));
+  for (std::uint32_t v = 0; v < vertex_count; ++v)
+    for (std::uint32_t j = offsets[v]; j < offsets[v + 1]; ++j)
+      slot_of[3 * std::size_t(entries[j].face) + corner_of(entries[j], v)] = j;
   std::vector<float> vertex_score(vertex_count);
   for (std::uint32_t v = 0; v < vertex_count; ++v) vertex_score[v] = tables.score(-1, live[v]);
   std::vector<std::uint8_t> emitted(face_count, 0);
@@ -123,7 +145,8 @@ Ordering reorder_forsyth(const Mesh& mesh, const ReorderParams& /*params*/) {
   evicted_stack.reserve(vertex_count);
   std::uint32_t max_valence = 0;
   for (std::uint32_t v = 0; v < vertex_count; ++v) max_valence = std::max(max_valence, live[v]);
-  std::vector<std::uint32_t> candidates(std::size_t(kModelCache + 3) * std::max(kGather, max_valence) + kGather);
+  std::vector<std::uint32_t> candidates(
+      std::size_t(kModelCache + 3) * std::max(kGather, std::min(max_valence, kCandidatesPerVertex)) + kGather);
   // The LRU, most recent first, and the buffer the next one is built in (then swapped).
   std::uint32_t cache_storage[2][kModelCache + 3];
   std::uint32_t* cache = cache_storage[0];
@@ -172,7 +195,7 @@ Ordering reorder_forsyth(const Mesh& mesh, const ReorderParams& /*params*/) {
     int next_size = 0;
     std::uint32_t candidate_count = 0;
     const auto gather = [&](std::uint32_t v, std::uint32_t keep) {
-      const std::uint32_t begin = offsets[v], count = live[v];
+      const std::uint32_t begin = offsets[v], count = std::min(live[v], kCandidatesPerVertex);
       std::uint32_t* out = candidates.data() + candidate_count;
       if (count <= kGather) [[likely]] {
         gather_slots(out, begin);
@@ -185,13 +208,10 @@ Ordering reorder_forsyth(const Mesh& mesh, const ReorderParams& /*params*/) {
       const std::uint32_t v = corners[i];
       if ((i > 0 && a == v) || (i > 1 && b == v)) continue;
       next_cache[next_size++] = v;
-      const std::uint32_t begin = offsets[v], end = begin + live[v];
-      for (std::uint32_t j = begin; j < end; ++j) {
-        if (entries[j].face == face) {
-          std::swap(entries[j], entries[end - 1]);
-          break;
-        }
-      }
+      const std::uint32_t last = offsets[v] + live[v] - 1, j = slot_of[3 * std::size_t(face) + i];
+      std::swap(entries[j], entries[last]);
+      slot_of[3 * std::size_t(entries[j].face) + corner_of(entries[j], v)] = j;
+      slot_of[3 * std::size_t(face) + i] = last;
       --live[v];
       gather(v, 1);
     }
@@ -208,7 +228,7 @@ Ordering reorder_forsyth(const Mesh& mesh, const ReorderParams& /*params*/) {
     for (int i = kModelCache; i < next_size; ++i) {  // pushed out of the model cache (scored so)
       const std::uint32_t v = next_cache[i];
       if (live[v] > 0) evicted_stack.push_back(v);
-      candidate_count -= live[v];  // the last ones gathered
+      candidate_count -= std::min(live[v], kCandidatesPerVertex);  // the last ones gathered
     }
     std::swap(cache, next_cache);
     cache_size = std::min(next_size, kModelCache);
@@ -227,7 +247,8 @@ Ordering reorder_forsyth(const Mesh& mesh, const ReorderParams& /*params*/) {
     while (best < 0 && !evicted_stack.empty()) {
       const std::uint32_t v = evicted_stack.back();
       evicted_stack.pop_back();
-      for (const Entry *e = entries.data() + offsets[v], *end = e + live[v]; e != end; ++e) {
+      for (const Entry *e = entries.data() + offsets[v], *end = e + std::min(live[v], kCandidatesPerVertex); e != end;
+           ++e) {
         const float score = entry_score(*e);
         if (best < 0 || score > best_score) {
           best_score = score;

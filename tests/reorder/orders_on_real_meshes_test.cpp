@@ -50,6 +50,8 @@ const Pinned kPinned[] = {
     {"texgroup", "bunny00", 1512687614768160072ull},      {"texgroup", "fandisk", 5168684695811071504ull},
     {"texgroup", "triceratops", 17433766058431235345ull}, {"forsyth", "bunny00", 13274104722757043402ull},
     {"forsyth", "fandisk", 3367951236812519780ull},       {"forsyth", "triceratops", 8856306872058004249ull},
+    {"batch", "bunny00", 14898770109992831132ull},        {"batch", "fandisk", 5486493083359157678ull},
+    {"batch", "triceratops", 9432946206663562563ull},
 };
 
 void expect_pinned(const Pinned& pinned, const Mesh& mesh) {
@@ -63,7 +65,10 @@ TEST(OrdersOnRealMeshes, FasterOrderingsDrawExactlyTheSameStreams) {
 }
 
 // The same on the generated pathological corpus (3,000 faces each), where the shortcuts do
-// fire: a vertex or an edge in thousands of faces. Hashes from the code before the speed-ups.
+// fire: a vertex or an edge in thousands of faces. Hashes from the code before the speed-ups,
+// except forsyth on few-vertices (was 8916589332071759822): there every vertex is in about 375
+// triangles and now offers only 32 of them as candidates (reorder/forsyth.cpp), which changes
+// the order; no vertex of a real mesh has 32 triangles, so the real meshes' streams above stay.
 const Pinned kPinnedPathological[] = {
     {"nvstrip", "degenerate", 2957356640140489700ull},    {"nvstrip", "duplicates", 1170235870291191400ull},
     {"nvstrip", "few-vertices", 15947117797241451373ull}, {"nvstrip", "edge-fan", 17073469618284670408ull},
@@ -76,8 +81,13 @@ const Pinned kPinnedPathological[] = {
     {"kcache", "duplicates", 12778154044136606569ull},    {"kcache", "few-vertices", 321713118131356058ull},
     {"kcache", "edge-fan", 15095144065545032245ull},      {"kcache", "vertex-fan", 4743481475737401413ull},
     {"forsyth", "degenerate", 12903751938181550699ull},   {"forsyth", "duplicates", 952500771244008833ull},
-    {"forsyth", "few-vertices", 8916589332071759822ull},  {"forsyth", "edge-fan", 14401335999471319901ull},
-    {"forsyth", "vertex-fan", 4743481475737401413ull},
+    {"forsyth", "few-vertices", 5133507511728932088ull},  {"forsyth", "edge-fan", 14401335999471319901ull},
+    {"forsyth", "vertex-fan", 4743481475737401413ull},    {"batch", "degenerate", 5633010833280311027ull},
+    {"batch", "duplicates", 12778154044136606569ull},     {"batch", "few-vertices", 12155221474730417854ull},
+    {"batch", "edge-fan", 15095144065545032245ull},       {"batch", "vertex-fan", 4743481475737401413ull},
+    {"texgroup", "degenerate", 2947936399078345770ull},   {"texgroup", "duplicates", 1120473868756242280ull},
+    {"texgroup", "few-vertices", 3219744234114437317ull}, {"texgroup", "edge-fan", 14174835857849239224ull},
+    {"texgroup", "vertex-fan", 13132902520228948338ull},
 };
 
 TEST(OrdersOnRealMeshes, FasterOrderingsDrawTheSameStreamsOnPathologicalMeshes) {
