@@ -87,7 +87,9 @@ Ordering reorder_scanline(const Mesh& mesh, const ReorderParams& params);
 
 // Forsyth, "Linear-speed vertex cache optimisation", 2006: the highest-scoring triangle around
 // the vertices of a 32-entry LRU model is emitted next. The model does not depend on the target
-// cache (cache size and policy are ignored): one order for every GPU. ACMR 0.68-0.71.
+// cache (cache size and policy are ignored): one order for every GPU. ACMR 0.68-0.71. A vertex
+// with more live triangles than the model has entries offers only the first 32 as candidates, so
+// an edge or vertex shared by thousands of faces stays linear (no real mesh reaches 32).
 Ordering reorder_forsyth(const Mesh& mesh, const ReorderParams& params);
 
 // Tipsy: Sander, Nehab, Barczak, "Fast triangle reordering for vertex locality and reduced
