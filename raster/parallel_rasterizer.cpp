@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <iterator>
+#include <mutex>
 
 namespace rastrace {
 
@@ -72,14 +74,81 @@ struct ParallelRasterizer::Worker {
   RasterStats stats;
 };
 
+// Idle workspaces, most recently returned last. A few are kept: one per thread count a process
+// renders with, in practice; the oldest go beyond that.
+struct ParallelRasterizer::WorkspaceCache {
+  static constexpr std::size_t kIdle = 4;
+  std::mutex mutex;
+  std::vector<std::unique_ptr<Workspace>> idle;
+};
+
+namespace {
+// Empties a batch whatever state an interrupted frame left it in.
+void reset_bins(std::vector<std::vector<std::uint32_t>>& bins, std::size_t tiles) {
+  bins.resize(tiles);
+  for (auto& bin : bins) bin.clear();
+}
+}  // namespace
+
+ParallelRasterizer::WorkspaceCache& ParallelRasterizer::workspace_cache() {
+  static WorkspaceCache cache;
+  return cache;
+}
+
+std::unique_ptr<ParallelRasterizer::Workspace> ParallelRasterizer::acquire_workspace(unsigned threads,
+                                                                                     std::size_t tiles) {
+  std::unique_ptr<Workspace> workspace;
+  {
+    WorkspaceCache& cache = workspace_cache();
+    const std::lock_guard lock(cache.mutex);
+    for (auto it = cache.idle.rbegin(); it != cache.idle.rend(); ++it)
+      if ((*it)->pool.size() == threads) {
+        workspace = std::move(*it);
+        cache.idle.erase(std::next(it).base());
+        break;
+      }
+  }
+  if (!workspace) {
+    workspace = std::make_unique<Workspace>(threads);
+    for (Batch& batch : workspace->batches) batch.triangles.resize(kBatchTriangles);
+  }
+  for (Batch& batch : workspace->batches) {
+    reset_bins(batch.bins, tiles);
+    batch.tile_events.resize(tiles);
+    batch.triangle_count = 0;
+    batch.busy_tiles.clear();
+    batch.steps.clear();
+    batch.draws.clear();
+    batch.fetches.clear();
+  }
+  workspace->cursors.resize(tiles);
+  return workspace;
+}
+
+void ParallelRasterizer::release_workspace(std::unique_ptr<Workspace> workspace) {
+  std::unique_ptr<Workspace> dropped;  // joined outside the lock
+  WorkspaceCache& cache = workspace_cache();
+  const std::lock_guard lock(cache.mutex);
+  cache.idle.push_back(std::move(workspace));
+  if (cache.idle.size() > WorkspaceCache::kIdle) {
+    dropped = std::move(cache.idle.front());
+    cache.idle.erase(cache.idle.begin());
+  }
+}
+
 ParallelRasterizer::ParallelRasterizer(Framebuffer& framebuffer, const RasterOptions& options, EventSink* sink)
     : framebuffer_(framebuffer),
       options_(options),
       sink_(sink),
       recording_(sink != nullptr),
-      pool_(std::max(1u, options.threads)),
       tile_columns_((framebuffer.width() + kScreenTile - 1) / kScreenTile),
       tile_rows_((framebuffer.height() + kScreenTile - 1) / kScreenTile),
+      workspace_(acquire_workspace(std::max(1u, options.threads),
+                                   static_cast<std::size_t>(tile_columns_) * static_cast<std::size_t>(tile_rows_))),
+      pool_(workspace_->pool),
+      batches_(workspace_->batches),
+      cursors_(workspace_->cursors),
+      filling_(&batches_[0]),
       texels_out_(sink),
       events_out_(sink) {
   if (sink_) ordered_ = std::make_unique<OrderedSink>(*this);
@@ -88,13 +157,6 @@ ParallelRasterizer::ParallelRasterizer(Framebuffer& framebuffer, const RasterOpt
     hiz_->build(framebuffer_);
   }
   for (unsigned w = 0; w < pool_.size(); ++w) workers_.push_back(std::make_unique<Worker>(sink_));
-  const std::size_t tiles = static_cast<std::size_t>(tile_columns_) * static_cast<std::size_t>(tile_rows_);
-  for (Batch& batch : batches_) {
-    batch.bins.resize(tiles);
-    batch.tile_events.resize(tiles);
-    batch.triangles.reserve(kBatchTriangles);
-  }
-  cursors_.resize(tiles);
   draw_tiles_ = [this](unsigned w) {
     Batch& batch = *drawing_;
     for (std::size_t i = next_tile_++; i < batch.busy_tiles.size(); i = next_tile_++)
@@ -104,6 +166,7 @@ ParallelRasterizer::ParallelRasterizer(Framebuffer& framebuffer, const RasterOpt
 
 ParallelRasterizer::~ParallelRasterizer() {
   if (drawing_) pool_.wait();  // an exception left a batch on the workers
+  release_workspace(std::move(workspace_));
 }
 
 EventSink* ParallelRasterizer::event_sink() { return ordered_.get(); }
@@ -118,16 +181,16 @@ void ParallelRasterizer::tile_range(const TriangleSetup& s, int& tx0, int& ty0, 
 void ParallelRasterizer::draw(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
                               const TriangleState& state) {
   Batch& batch = *filling_;
-  Binned& binned = batch.triangles.emplace_back();
+  // Set up in place, in storage allocated with the workspace: no per-triangle initialisation.
+  const std::uint32_t index = batch.triangle_count;
+  Binned& binned = batch.triangles[index];
   if (!setup_triangle(a, b, c, framebuffer_.width(), framebuffer_.height(), traversal_alignment(options_.traversal),
-                      binned.setup)) {
-    batch.triangles.pop_back();
+                      binned.setup))
     return;
-  }
+  ++batch.triangle_count;
   ++triangles_;
   binned.state = state;
   binned.textured = state.texture != nullptr && !state.texture->levels.empty();
-  const auto index = static_cast<std::uint32_t>(batch.triangles.size() - 1);
   int tx0, ty0, tx1, ty1;
   tile_range(binned.setup, tx0, ty0, tx1, ty1);
   for (int ty = ty0; ty <= ty1; ++ty)
@@ -135,7 +198,7 @@ void ParallelRasterizer::draw(const RasterVertex& a, const RasterVertex& b, cons
       batch.bins[static_cast<std::size_t>(ty) * static_cast<std::size_t>(tile_columns_) + static_cast<std::size_t>(tx)]
           .push_back(index);
   if (recording_) batch.steps.push_back({StepKind::Triangle, index, 0});
-  if (batch.triangles.size() >= kBatchTriangles) run_batch(false);
+  if (batch.triangle_count >= kBatchTriangles) run_batch(false);
 }
 
 void ParallelRasterizer::flush() {
@@ -192,7 +255,7 @@ void ParallelRasterizer::run_batch(bool wait) {
 void ParallelRasterizer::clear(Batch& batch) {
   for (const std::size_t t : batch.busy_tiles) batch.bins[t].clear();
   batch.busy_tiles.clear();
-  batch.triangles.clear();
+  batch.triangle_count = 0;
   batch.steps.clear();
   batch.draws.clear();
   batch.fetches.clear();
@@ -212,8 +275,15 @@ void ParallelRasterizer::rasterize_tile(Worker& worker, Batch& batch, std::size_
   const std::uint64_t texel_base = worker.texels.reads();
   const std::uint64_t event_base = worker.framebuffer_events.records();
   const bool debug = framebuffer_.has_debug_planes();
-  for (const std::uint32_t index : batch.bins[tile]) {
-    const Binned& triangle = batch.triangles[index];
+  const std::vector<std::uint32_t>& bin = batch.bins[tile];
+  for (std::size_t i = 0; i < bin.size(); ++i) {
+    const Binned& triangle = batch.triangles[bin[i]];
+    // The calling thread wrote the next triangle's setup (its 5 cache lines) from another core:
+    // ask for them while this one is drawn, instead of stalling on each when it is read.
+    if (i + 1 < bin.size()) {
+      const char* next = reinterpret_cast<const char*>(&batch.triangles[bin[i + 1]]);
+      for (std::size_t line = 0; line < sizeof(Binned); line += 64) __builtin_prefetch(next + line);
+    }
     if (triangle.textured) {
       if (debug)
         rasterize_in_tile<true, true>(worker, triangle, clip, out, texel_base, event_base);

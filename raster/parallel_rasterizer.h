@@ -12,6 +12,12 @@
 // Batches are double-buffered: while the workers draw one, the calling thread sets up and bins
 // the next; when that one is full it joins the workers on what is left of the first, replays it,
 // and hands over the second. Tiles of one batch are drawn only after every tile of the one before.
+//
+// The threads and the batches' buffers (a workspace) outlive the rasterizer: a finished frame
+// returns its workspace to a process-wide cache, and the next frame with the same thread count
+// takes it back, as a GL driver keeps its threads and scene buffers per context. A frame then
+// neither starts threads nor touches fresh memory (on a loaded or virtualised machine a page
+// fault costs microseconds, and one frame's buffers are megabytes).
 #pragma once
 
 #include <atomic>
@@ -77,6 +83,13 @@ class ParallelRasterizer {
 
   void tile_range(const TriangleSetup& s, int& tx0, int& ty0, int& tx1, int& ty1) const;
   struct Batch;
+  struct Workspace;
+  struct WorkspaceCache;
+  // Takes an idle workspace of `threads` threads from the cache (or makes one) for `tiles` screen
+  // tiles; returns it to the cache when the rasterizer is done.
+  static std::unique_ptr<Workspace> acquire_workspace(unsigned threads, std::size_t tiles);
+  static void release_workspace(std::unique_ptr<Workspace> workspace);
+  static WorkspaceCache& workspace_cache();
   // Starts drawing the filled batch on the workers (after finishing the one before); with
   // `wait`, draws it to the end.
   void run_batch(bool wait);
@@ -97,14 +110,16 @@ class ParallelRasterizer {
   bool recording_;  // a sink is attached: tiles keep their events for the replay
   std::unique_ptr<OrderedSink> ordered_;
   std::unique_ptr<HierarchicalZ> hiz_;
-  WorkerPool pool_;
   std::vector<std::unique_ptr<Worker>> workers_;
   int tile_columns_, tile_rows_;
   std::uint64_t triangles_ = 0;
 
   // A batch of triangles with everything its replay needs.
   struct Batch {
+    // kBatchTriangles entries, allocated (and initialised) once per workspace; the first
+    // triangle_count are this batch's.
     std::vector<Binned> triangles;
+    std::uint32_t triangle_count = 0;
     std::vector<std::vector<std::uint32_t>> bins;  // per tile: indices into triangles, in draw order
     std::vector<std::size_t> busy_tiles;
     std::vector<TileEvents> tile_events;
@@ -112,12 +127,20 @@ class ParallelRasterizer {
     std::vector<DrawInfo> draws;
     std::vector<VertexFetch> fetches;
   };
-  Batch batches_[2];
-  Batch* filling_ = &batches_[0];  // receives triangles and steps
+  struct Workspace {
+    explicit Workspace(unsigned threads) : pool(threads) {}
+    WorkerPool pool;
+    Batch batches[2];
+    std::vector<TileCursor> cursors;  // the replay's, per tile
+  };
+  std::unique_ptr<Workspace> workspace_;
+  WorkerPool& pool_;
+  Batch* batches_;                 // workspace_'s two
+  std::vector<TileCursor>& cursors_;
+  Batch* filling_;                 // receives triangles and steps
   Batch* drawing_ = nullptr;       // being drawn by the workers, if any
   std::atomic<std::size_t> next_tile_{0};
   std::function<void(unsigned)> draw_tiles_;  // the workers' job: tiles of *drawing_
-  std::vector<TileCursor> cursors_;
 
   // The replay's recorders: batch the merged events as the serial rasterizer's recorders do.
   TexelRecorder texels_out_;

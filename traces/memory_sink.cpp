@@ -2,6 +2,14 @@
 
 namespace rastrace {
 
+void MemorySink::clear() {
+  draws.clear();
+  draw_first_fetch.clear();
+  fetches.clear();
+  texels.clear();
+  framebuffer.clear();
+}
+
 void MemorySink::begin_draw(const DrawInfo& draw) {
   draws.push_back(draw);
   draw_first_fetch.push_back(fetches.size());

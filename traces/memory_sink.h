@@ -1,8 +1,12 @@
 // An in-memory sink: keeps every event, for tests and for replaying without a file.
+// The event vectors are backed by huge pages once they pass 2 MiB (core/huge_page_allocator.h):
+// a frame's tens of megabytes of events then cost a few dozen page faults, not thousands. Keep
+// one sink across frames and clear() it: the capacity stays, and later frames fault not at all.
 #pragma once
 
 #include <vector>
 
+#include "core/huge_page_allocator.h"
 #include "traces/sink.h"
 
 namespace rastrace {
@@ -15,11 +19,17 @@ class MemorySink final : public EventSink {
   void framebuffer_accesses(std::span<const FramebufferAccess> accesses) override;
   bool wants_framebuffer_events() const override { return true; }
 
+  template <typename Event>
+  using Events = std::vector<Event, HugePageAllocator<Event>>;
+
+  // Forgets every event and keeps the capacity.
+  void clear();
+
   std::vector<DrawInfo> draws;
   std::vector<std::size_t> draw_first_fetch;  // index into fetches where each draw starts
-  std::vector<VertexFetch> fetches;
-  std::vector<TexelAccess> texels;
-  std::vector<FramebufferAccess> framebuffer;
+  Events<VertexFetch> fetches;
+  Events<TexelAccess> texels;
+  Events<FramebufferAccess> framebuffer;
 };
 
 }  // namespace rastrace

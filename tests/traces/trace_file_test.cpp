@@ -72,8 +72,8 @@ struct RecordingSink final : EventSink {
   MemorySink memory;
   std::vector<DrawInfo>& draws = memory.draws;
   std::vector<std::size_t>& draw_first_fetch = memory.draw_first_fetch;
-  std::vector<VertexFetch>& fetches = memory.fetches;
-  std::vector<TexelAccess>& texels = memory.texels;
+  MemorySink::Events<VertexFetch>& fetches = memory.fetches;
+  MemorySink::Events<TexelAccess>& texels = memory.texels;
   std::vector<AddressAccess> addresses;
   int ends = 0;
   bool finished = false;

@@ -3,6 +3,7 @@
 #include <bit>
 #include <filesystem>
 #include <fstream>
+#include <span>
 #include <sstream>
 
 #include <gmock/gmock.h>
@@ -40,7 +41,7 @@ std::vector<FramebufferAccess> sample_framebuffer_events() {
   return events;
 }
 
-void expect_same(const std::vector<FramebufferAccess>& got, const std::vector<FramebufferAccess>& want) {
+void expect_same(std::span<const FramebufferAccess> got, std::span<const FramebufferAccess> want) {
   ASSERT_EQ(got.size(), want.size());
   for (std::size_t i = 0; i < want.size(); ++i)
     EXPECT_TRUE(got[i].x == want[i].x && got[i].y == want[i].y && got[i].op == want[i].op &&
