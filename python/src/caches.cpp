@@ -98,7 +98,7 @@ struct SweepRows {
 };
 
 // `rastrace sweep TRACE --cache SPEC` for a byte-cache spec, rows repeated `repeat` times (1 for
-// a sweep; more only to measure the conversion of a large result, bench/python_columns.py).
+// a sweep; more only to measure the conversion of a large result, bench/python_columns.cpp).
 SweepRows byte_sweep(const std::string& trace, const CacheSpec& cache, unsigned threads, std::size_t repeat) {
   const TraceSummary summary = summarize_trace(trace);
   SweepRows out;
