@@ -28,7 +28,9 @@ void* map_column_memory(std::size_t bytes) {
     munmap(reinterpret_cast<void*>(aligned + length), tail);
   void* memory = reinterpret_cast<void*>(aligned);
   // Advice only: without transparent huge pages (or with them off) the mapping works as usual.
+#ifdef MADV_HUGEPAGE
   madvise(memory, length, MADV_HUGEPAGE);
+#endif
   return memory;
 }
 
