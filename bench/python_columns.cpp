@@ -3,7 +3,7 @@
 //
 // The benchmark embeds the interpreter the module was built for and imports the built module
 // (<build>/python/rastrace). A real sweep over a rendered trace (builtin:bunny at 128x128, 672
-// byte-cache configurations, 480 possible) is repeated to 1,000,608 rows in C++; each iteration
+// byte-cache configurations) is repeated to 1,000,608 rows in C++; each iteration
 // then pays what a user pays after the sweep:
 //   - SweepToPandas: `rows.columns().to_pandas()` (numpy columns, then a DataFrame that keeps them)
 //   - SweepToPandasDefault, the comparison row: `pandas.DataFrame(rows.columns())`, pandas'
