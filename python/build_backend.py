@@ -5,6 +5,9 @@ It configures the repository's CMake project for the interpreter running pip
 folder the build lays out (``<build>/python/rastrace``: the extension, ``__init__.py``, the type
 stubs) into a wheel. The build folder is ``build-wheel/`` in the repository (kept, so a second
 install rebuilds only what changed; ``RASTRACE_WHEEL_BUILD_DIR`` moves it).
+``RASTRACE_WHEEL_PACKAGE_DIR`` packs a package folder an existing build made instead
+(``build/python/rastrace`` after scripts/build.sh): no second build of the C++ project
+(python/tests/test_install.py installs that way).
 Debian 12 has no scikit-build-core, and meson-python would need a second build description of
 the whole C++ project; this backend needs nothing but CMake and pybind11-dev.
 """
@@ -46,16 +49,25 @@ def _metadata():
 
 
 def _build_package():
+    prebuilt = os.environ.get("RASTRACE_WHEEL_PACKAGE_DIR")
+    if prebuilt:
+        package = pathlib.Path(prebuilt)
+        if not any(package.glob("_rastrace*.so")):
+            raise RuntimeError(f"RASTRACE_WHEEL_PACKAGE_DIR={prebuilt}: no built extension _rastrace*.so there")
+        return package
     build = pathlib.Path(os.environ.get("RASTRACE_WHEEL_BUILD_DIR", ROOT / "build-wheel"))
     configure = [
         "cmake", "-S", str(ROOT), "-B", str(build), "-DCMAKE_BUILD_TYPE=Release", "-DRASTRACE_PYTHON=ON",
         f"-DPython_EXECUTABLE={sys.executable}",
     ]
+    env = dict(os.environ)
     if shutil.which("ccache"):
         configure += ["-DCMAKE_CXX_COMPILER_LAUNCHER=ccache", "-DCMAKE_C_COMPILER_LAUNCHER=ccache"]
-    subprocess.run(configure, check=True, stdout=sys.stderr)
+        # Paths relative to the clone: another clone's wheel build hits the same cache entries.
+        env.setdefault("CCACHE_BASEDIR", str(ROOT))
+    subprocess.run(configure, check=True, stdout=sys.stderr, env=env)
     subprocess.run(["cmake", "--build", str(build), "--target", "_rastrace", "-j", str(os.cpu_count() or 1)],
-                   check=True, stdout=sys.stderr)
+                   check=True, stdout=sys.stderr, env=env)
     package = build / "python" / "rastrace"
     if not any(package.glob("_rastrace*.so")):
         raise RuntimeError(f"the build made no extension in {package}: is pybind11-dev installed?")

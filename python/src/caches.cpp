@@ -10,6 +10,7 @@
 
 #include "cache_sim/cache_spec.h"
 #include "cache_sim/profile_sink.h"
+#include "column_memory.h"
 #include "columns.h"
 #include "core/error.h"
 #include "core/units.h"
@@ -38,11 +39,14 @@ struct SweepRows {
       if (empty.columns.at(c).key != kByteColumns[c])
         throw std::logic_error("sweep columns differ from byte_cache_table's: " + empty.columns[c].key);
     const std::size_t n = rows.size();
-    // numpy allocates the columns uninitialized (a std::vector would zero 100 MB first for 10^6
-    // rows) and the loop fills them without the GIL.
-    py::array_t<std::int64_t> size(n), line(n), assoc(n), accesses(n), hits(n), misses(n), bytes(n), compulsory(n),
-        capacity(n), conflict(n);
-    py::array_t<double> miss_rate(n);
+    // The columns come uninitialized (a std::vector would zero 100 MB first for 10^6 rows), large
+    // ones in huge pages (column_memory.h), and the loop fills them without the GIL.
+    py::array_t<std::int64_t> size = new_column<std::int64_t>(n), line = new_column<std::int64_t>(n),
+                              assoc = new_column<std::int64_t>(n), accesses = new_column<std::int64_t>(n),
+                              hits = new_column<std::int64_t>(n), misses = new_column<std::int64_t>(n),
+                              bytes = new_column<std::int64_t>(n), compulsory = new_column<std::int64_t>(n),
+                              capacity = new_column<std::int64_t>(n), conflict = new_column<std::int64_t>(n);
+    py::array_t<double> miss_rate = new_column<double>(n);
     bool three_c = true;
     {
       std::int64_t* const out[] = {size.mutable_data(),   line.mutable_data(),       assoc.mutable_data(),
@@ -94,7 +98,7 @@ struct SweepRows {
 };
 
 // `rastrace sweep TRACE --cache SPEC` for a byte-cache spec, rows repeated `repeat` times (1 for
-// a sweep; more only to measure the conversion of a large result, bench/python_columns.py).
+// a sweep; more only to measure the conversion of a large result, bench/python_columns.cpp).
 SweepRows byte_sweep(const std::string& trace, const CacheSpec& cache, unsigned threads, std::size_t repeat) {
   const TraceSummary summary = summarize_trace(trace);
   SweepRows out;

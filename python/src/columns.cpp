@@ -4,10 +4,11 @@
 #include <limits>
 #include <variant>
 
+#include "column_memory.h"
+
 namespace rastrace::python {
 
-TextColumn::TextColumn(std::size_t rows)
-    : array_(py::dtype("O"), std::vector<py::ssize_t>{static_cast<py::ssize_t>(rows)}) {}
+TextColumn::TextColumn(std::size_t rows) : array_(new_object_column(rows)) {}
 
 void TextColumn::set(std::size_t row, std::string_view text) {
   // Sorted sweep rows repeat the previous row's text: no lookup then.

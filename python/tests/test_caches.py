@@ -1,5 +1,6 @@
 """replay, sweep and lru_profile: the cache simulator over traces, results as numpy columns."""
 
+import sys
 import threading
 import time
 
@@ -107,3 +108,23 @@ def test_bad_spec_raises_the_cli_message(bunny_trace):
     with pytest.raises(rastrace.InputError) as error:
         rastrace.replay(str(bunny_trace), ["size=1KiB,ways=2"])
     assert str(error.value) == cli_error("replay", bunny_trace, "--cache", "size=1KiB,ways=2")
+
+
+def test_columns_of_a_large_sweep_equal_the_small_ones_and_release_their_text(bunny_trace):
+    # From 4 MiB a column lives in huge-page memory of its own (python/src/column_memory.h); the
+    # text columns' cells are references that memory's owner releases.
+    spec = "size=1KiB..8KiB,line=64B,assoc=full,policy=fifo/lru,layout=linear"
+    small = rastrace.sweep(str(bunny_trace), spec)
+    repeat = -(-(1 << 19) // small.rows)  # 2^19 rows of 8 bytes: 4 MiB
+    large = rastrace._rastrace._sweep_rows(str(bunny_trace), spec, repeat).columns()
+    assert large.rows == small.rows * repeat and list(large) == list(small)
+    for key, column in small.items():
+        assert large[key].dtype == column.dtype, key
+        assert np.array_equal(large[key].reshape(repeat, small.rows), np.tile(column, (repeat, 1))), key
+    assert not large["size_bytes"].flags.owndata and large["size_bytes"].flags.writeable
+    policy = large["policy"][0]  # one string object shared by the cells of that policy
+    assert sys.getrefcount(policy) == 2 + large.rows // 2  # the cells, `policy`, the argument
+    large["policy"][0] = "changed"
+    assert large["policy"][0] == "changed" and sys.getrefcount(policy) == 1 + large.rows // 2
+    del large
+    assert sys.getrefcount(policy) == 2
