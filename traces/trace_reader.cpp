@@ -189,7 +189,9 @@ struct TraceReader::ReadState {
   // Opened with the caller's stream, so both read the same file even if the path is replaced
   // (written atomically by rename) before the first in-order read starts the thread.
   std::ifstream ahead_stream;
-  std::array<Slot, 3> slots;  // one held by the caller, one per decoding thread
+  // One held by the caller, one per decoding thread, and two more: the read-ahead thread keeps
+  // decoding while the caller works on a chunk it decoded itself (it then finds two ready).
+  std::array<Slot, 5> slots;
   std::size_t held = kNone;
   bool enabled = read_ahead_by_default();
   bool broken = false;  // the thread could not start: read in the caller only

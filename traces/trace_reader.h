@@ -73,7 +73,7 @@ class TraceReader {
   // Read-ahead. Once chunks are read in file order (chunk i, then the next chunk of the kinds
   // below), a second thread with its own stream and zstd context reads, checks and decodes the
   // following chunks while the caller works on chunk i, and a caller that would wait for it
-  // decodes the chunk after instead. At most 3 decoded chunks are in memory. A read out of order
+  // decodes the chunk after instead. At most 5 decoded chunks are in memory. A read out of order
   // drops what was read ahead. On by default when the machine has 2 or more hardware threads
   // and the environment does not set RASTRACE_READ_AHEAD=0.
   void set_read_ahead(bool enabled);
