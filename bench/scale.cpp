@@ -101,7 +101,9 @@ const std::string& long_trace() {
   return path;
 }
 
-// Reads the long trace, maps every texel to its 64-byte line, and hands each batch to `use`.
+// Reads the long trace (texture, level, x and y of each texel: the pixel and triangle columns are
+// checked by their chunk's checksum but not decoded, as in `sweep --sample`), maps every texel to
+// its 64-byte line, and hands each batch to `use`.
 template <typename Use>
 void replay_lines(benchmark::State& state, Use&& use, bool read_ahead = false) {
   const std::string& path = long_trace();
@@ -114,6 +116,7 @@ void replay_lines(benchmark::State& state, Use&& use, bool read_ahead = false) {
   for (auto _ : state) {
     TexelTraceReader reader(path);
     reader.set_read_ahead(read_ahead);  // off: one core, CPU time is the whole cost
+    reader.set_addresses_only(true);    // the layout needs texture, level, x and y
     const TextureLayout layout(parse_layout("block4"), reader.metadata().textures);
     std::vector<std::uint64_t> lines;
     std::span<const TexelAccess> batch;

@@ -119,6 +119,7 @@ void run_sampled_rows(const std::string& trace_path, const SweepSpec& spec, cons
   kinds.vertices = spec.source == SweepSource::VertexBuffer;
   kinds.texels = spec.source == SweepSource::Texel;
   kinds.addresses = spec.source == SweepSource::Address;
+  kinds.texel_details = false;  // the sink maps texture, level, x and y to addresses, nothing else
   SampledSink sink(spec, layouts, textures, groups);
   std::optional<Progress> progress;
   const TraceSummary summary = summarize_trace(trace_path);
