@@ -5,7 +5,9 @@
 //   - the one-pass set-associative profile, 64 sets, every associativity 1..16,
 //   - SHARDS at a fixed rate of 1% (fully associative LRU, every size) and miniature simulations
 //     of FIFO and random caches (16 KiB to 1 MiB) at the same rate.
-// CPU time: the machine is shared, so rates are per core of CPU actually used.
+// CPU time: the machine is shared, so rates are per core of CPU actually used. The exceptions,
+// named *_ReadAhead, read with the reader's read-ahead thread (two cores): they report wall time
+// and the CPU time of the whole process.
 //
 // The long trace is not stored anywhere: it is written once per run (or kept, see below) from the
 // rendered traces named in RASTRACE_BENCH_TRACES (comma-separated, e.g. the frames of
@@ -16,6 +18,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <ctime>
 #include <cstdlib>
 #include <memory>
 #include <filesystem>
@@ -46,6 +49,12 @@ std::vector<std::string> source_traces() {
   for (std::string path; std::getline(list, path, ',');)
     if (!path.empty()) out.push_back(path);
   return out;
+}
+
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
 std::string g_temporary;  // the long trace written for this run only, removed at exit
@@ -92,18 +101,22 @@ const std::string& long_trace() {
   return path;
 }
 
-// Reads the long trace, maps every texel to its 64-byte line, and hands each batch to `use`.
+// Reads the long trace (texture, level, x and y of each texel: the pixel and triangle columns are
+// checked by their chunk's checksum but not decoded, as in `sweep --sample`), maps every texel to
+// its 64-byte line, and hands each batch to `use`.
 template <typename Use>
-void replay_lines(benchmark::State& state, Use&& use) {
+void replay_lines(benchmark::State& state, Use&& use, bool read_ahead = false) {
   const std::string& path = long_trace();
   if (path.empty()) {
     state.SkipWithError("set RASTRACE_BENCH_TRACES to rendered trace files");
     return;
   }
   std::uint64_t records = 0;
+  const double caller_start = thread_cpu_seconds();
   for (auto _ : state) {
     TexelTraceReader reader(path);
-    reader.set_read_ahead(false);  // one core: CPU time is the whole cost
+    reader.set_read_ahead(read_ahead);  // off: one core, CPU time is the whole cost
+    reader.set_addresses_only(true);    // the layout needs texture, level, x and y
     const TextureLayout layout(parse_layout("block4"), reader.metadata().textures);
     std::vector<std::uint64_t> lines;
     std::span<const TexelAccess> batch;
@@ -117,6 +130,9 @@ void replay_lines(benchmark::State& state, Use&& use) {
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(records));
   state.counters["records"] = static_cast<double>(records / state.iterations());
+  // With read-ahead, the process's CPU time minus this is the read-ahead thread's: on an idle
+  // 2-core machine the wall time approaches the larger of the two.
+  state.counters["caller_cpu_s"] = (thread_cpu_seconds() - caller_start) / double(state.iterations());
 }
 
 void BM_Long_ReadDecodeLayout(benchmark::State& state) {
@@ -145,19 +161,46 @@ void BM_Long_SetAssocProfile_64Sets_Ways1to16(benchmark::State& state) {
 }
 BENCHMARK(BM_Long_SetAssocProfile_64Sets_Ways1to16)->Unit(benchmark::kSecond)->Iterations(1);
 
-void BM_Long_Shards1Percent(benchmark::State& state) {
+// The lines are sampled once per batch for both estimators, as `sweep --sample` does.
+void shards_1_percent(benchmark::State& state, bool read_ahead) {
   ShardsProfile shards({0.01, 0});
   std::vector<CacheConfig> caches;
   for (const ReplacementPolicy policy : {ReplacementPolicy::Fifo, ReplacementPolicy::Random})
     for (std::uint64_t size = 16 * 1024; size <= 1024 * 1024; size *= 2) caches.push_back({size, 64, 0, policy, 1});
   MiniSimulations minis(caches, 0.01);
-  replay_lines(state, [&](const std::vector<std::uint64_t>& lines) {
-    shards.access_lines(lines);
-    minis.access_lines(lines);
-  });
+  SampledBatch sampled(0.01);
+  replay_lines(
+      state,
+      [&](const std::vector<std::uint64_t>& lines) {
+        sampled.sample(lines);
+        shards.access_sampled(sampled);
+        minis.access_sampled(sampled);
+      },
+      read_ahead);
   state.counters["lru_16KiB_estimate"] = shards.miss_ratio(256);
+  state.counters["fifo_16KiB_estimate"] = minis.miss_ratio(0);
+  state.counters["sampled_accesses"] = shards.sampled_accesses();
 }
+
+void BM_Long_Shards1Percent(benchmark::State& state) { shards_1_percent(state, false); }
 BENCHMARK(BM_Long_Shards1Percent)->Unit(benchmark::kSecond)->Iterations(1);
+
+void BM_Long_Shards1Percent_ReadAhead(benchmark::State& state) { shards_1_percent(state, true); }
+BENCHMARK(BM_Long_Shards1Percent_ReadAhead)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
+
+void BM_Long_ReadDecodeLayout_ReadAhead(benchmark::State& state) {
+  replay_lines(
+      state, [](const std::vector<std::uint64_t>& lines) { benchmark::DoNotOptimize(lines.data()); }, true);
+}
+BENCHMARK(BM_Long_ReadDecodeLayout_ReadAhead)
+    ->Unit(benchmark::kSecond)
+    ->Iterations(1)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
 
 // Accuracy, not speed: SHARDS at 1% and 0.1% and the 1% miniature FIFO and random simulations
 // against the exact curves (LruStackProfile; one ByteCache per size) over the same lines,

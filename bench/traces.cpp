@@ -7,10 +7,13 @@
 //   - writer throughput
 //   - zstd decompression alone of RASTRACE_BENCH_TRACE's payloads recompressed at other levels
 //     (the writer's level is an option, not part of the format): does any level decode faster?
+//   - zstd decompression alone of a group of texel columns compressed apart (an experiment for a
+//     format whose consumers skip the columns they do not need): how fast would it be?
 // Read benchmarks run with read-ahead off (/ahead:0, one thread) and on (/ahead:1, a second
 // thread): wall-clock time, since the work is on two threads.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -244,6 +247,90 @@ void BM_TraceZstdLevel_File(benchmark::State& state) {
   state.counters["bytes_per_record"] = double(compressed_bytes) / double(file_records);
 }
 BENCHMARK(BM_TraceZstdLevel_File)->ArgName("level")->Arg(-5)->Arg(1)->Arg(3)->Arg(9)->Arg(19)->Unit(benchmark::kMillisecond);
+
+// The byte ranges of the 7 columns of a decoded texel payload (chunk_codec.h: mode, first value,
+// then the deltas; mode 0x81 adds an escape count and the escaped deltas).
+std::vector<std::pair<std::size_t, std::size_t>> texel_columns(const std::vector<char>& raw, std::uint32_t n) {
+  std::vector<std::pair<std::size_t, std::size_t>> columns;
+  std::size_t at = 0;
+  for (int k = 0; k < 7; ++k) {
+    const std::size_t begin = at;
+    const std::uint8_t mode = static_cast<std::uint8_t>(raw.at(at));
+    at += 9;
+    const std::size_t deltas = n ? n - 1 : 0;
+    if (mode == 0x81) {
+      std::uint32_t large = 0;
+      std::memcpy(&large, raw.data() + at, 4);
+      at += 4 + deltas + std::size_t{large} * 8;
+    } else {
+      at += deltas * mode;
+    }
+    columns.emplace_back(begin, at);
+  }
+  return columns;
+}
+
+// zstd alone, one thread, CPU time, level 3, on the texel chunks of RASTRACE_BENCH_TRACE with a
+// group of columns compressed on its own: /group:0 the four a cache simulation needs (texture,
+// level, x, y), /group:1 the other three (pixel x, pixel y, triangle), /group:2 all seven as the
+// writer compresses them. Rates are per texel record.
+void BM_TraceColumnGroupZstd_File(benchmark::State& state) {
+  const char* path = std::getenv("RASTRACE_BENCH_TRACE");
+  if (!path) {
+    state.SkipWithError("set RASTRACE_BENCH_TRACE to a trace file");
+    return;
+  }
+  const int group = static_cast<int>(state.range(0));
+  struct Payload {
+    std::vector<char> compressed;
+    std::size_t raw = 0;
+    std::uint32_t records = 0;
+  };
+  std::vector<Payload> payloads;
+  std::uint64_t file_records = 0, compressed_bytes = 0;
+  {
+    const TraceReader reader(path);
+    std::ifstream in(path, std::ios::binary);
+    for (const ChunkInfo& c : reader.chunks()) {
+      if (c.kind != RecordKind::Texel) continue;
+      char header[kChunkHeaderBytes];
+      in.seekg(static_cast<std::streamoff>(c.offset));
+      in.read(header, kChunkHeaderBytes);
+      std::uint32_t stored = 0, raw = 0;
+      std::memcpy(&stored, header + 12, 4);
+      std::memcpy(&raw, header + 16, 4);
+      std::vector<char> original(stored), decoded(raw);
+      in.read(original.data(), stored);
+      ZSTD_decompress(decoded.data(), raw, original.data(), stored);
+      const auto columns = texel_columns(decoded, c.records);
+      const std::size_t begin = group == 1 ? columns[4].first : 0;
+      const std::size_t end = group == 0 ? columns[3].second : columns[6].second;
+      Payload p;
+      p.raw = end - begin;
+      p.compressed.resize(ZSTD_compressBound(p.raw));
+      p.compressed.resize(ZSTD_compress(p.compressed.data(), p.compressed.size(), decoded.data() + begin, p.raw, 3));
+      p.records = c.records;
+      compressed_bytes += p.compressed.size();
+      file_records += c.records;
+      payloads.push_back(std::move(p));
+    }
+  }
+  ZSTD_DCtx* dctx = ZSTD_createDCtx();
+  std::vector<char> raw;
+  std::uint64_t records = 0;
+  for (auto _ : state)
+    for (const Payload& p : payloads) {
+      raw.resize(p.raw);
+      benchmark::DoNotOptimize(
+          ZSTD_decompressDCtx(dctx, raw.data(), raw.size(), p.compressed.data(), p.compressed.size()));
+      records += p.records;
+    }
+  ZSTD_freeDCtx(dctx);
+  state.SetItemsProcessed(static_cast<std::int64_t>(records));
+  state.counters["bytes_per_record"] = double(compressed_bytes) / double(std::max<std::uint64_t>(1, file_records));
+  state.SetLabel(group == 0 ? "texture, level, x, y" : group == 1 ? "pixel x, pixel y, triangle" : "all 7 columns");
+}
+BENCHMARK(BM_TraceColumnGroupZstd_File)->ArgName("group")->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 void BM_TraceWrite_Texels(benchmark::State& state) {
   const std::string path = temp("write.rtrace");

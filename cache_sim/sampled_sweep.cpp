@@ -20,6 +20,7 @@ struct SampledGroup {
   std::vector<std::size_t> shards_rows, mini_rows;
   std::unique_ptr<ShardsProfile> shards;
   std::unique_ptr<MiniSimulations> minis;
+  std::unique_ptr<SampledBatch> sampled;  // the group's lines sampled once for both estimators
   std::vector<std::uint64_t> lines;
 };
 
@@ -69,8 +70,9 @@ class SampledSink final : public EventSink {
       if (g.layout != layout) continue;
       g.lines.resize(addresses_.size());
       for (std::size_t i = 0; i < addresses_.size(); ++i) g.lines[i] = addresses_[i] >> g.line_shift;
-      if (g.shards) g.shards->access_lines(g.lines);
-      if (g.minis) g.minis->access_lines(g.lines);
+      g.sampled->sample(g.lines);
+      if (g.shards) g.shards->access_sampled(*g.sampled);
+      if (g.minis) g.minis->access_sampled(*g.sampled);
     }
   }
 
@@ -110,12 +112,14 @@ void run_sampled_rows(const std::string& trace_path, const SweepSpec& spec, cons
     std::vector<CacheConfig> caches;
     for (const std::size_t r : g.mini_rows) caches.push_back(rows[r].cache);
     if (!caches.empty()) g.minis = std::make_unique<MiniSimulations>(caches, sample.rate);
+    g.sampled = std::make_unique<SampledBatch>(sample.rate);
   }
 
   ReplayKinds kinds;
   kinds.vertices = spec.source == SweepSource::VertexBuffer;
   kinds.texels = spec.source == SweepSource::Texel;
   kinds.addresses = spec.source == SweepSource::Address;
+  kinds.texel_details = false;  // the sink maps texture, level, x and y to addresses, nothing else
   SampledSink sink(spec, layouts, textures, groups);
   std::optional<Progress> progress;
   const TraceSummary summary = summarize_trace(trace_path);

@@ -57,12 +57,40 @@ inline std::uint64_t sample_hash(std::uint64_t line) {
 // The threshold of a rate: sampled when sample_hash(line) < threshold, or every line at rate 1.
 std::uint64_t sample_threshold(double rate);
 
+// The accesses of one batch that a rate samples, with their hashes: the filter runs once per batch
+// however many estimators of that rate follow (a sweep feeds a ShardsProfile and the
+// MiniSimulations of the same lines), and at 1% they see 1% of the accesses.
+class SampledBatch {
+ public:
+  explicit SampledBatch(double rate);
+  // Keeps the lines of `lines` the rate samples, in order (replaces the previous batch).
+  void sample(std::span<const std::uint64_t> lines);
+
+  double rate() const { return rate_; }
+  std::uint64_t accesses() const { return accesses_; }  // all of the batch's, sampled or not
+  std::span<const std::uint64_t> lines() const { return {lines_.data(), count_}; }
+  std::span<const std::uint64_t> hashes() const { return {hashes_.data(), count_}; }
+
+ private:
+  double rate_;
+  std::uint64_t threshold_;
+  bool all_;
+  std::uint64_t accesses_ = 0;
+  std::size_t count_ = 0;
+  // Sized to the largest batch seen and never shrunk: the filter writes every line and advances
+  // past the sampled ones (no branch to mispredict, no zero-filling per batch).
+  std::vector<std::uint64_t> lines_, hashes_;
+};
+
 // SHARDS: the LRU miss ratio of every fully associative size, from one sampled pass.
 class ShardsProfile {
  public:
   explicit ShardsProfile(SampleSpec spec);
   ~ShardsProfile();
   void access_lines(std::span<const std::uint64_t> lines);
+  // The same for a batch already sampled at a rate of at least this profile's (start) rate;
+  // throws std::invalid_argument otherwise.
+  void access_sampled(const SampledBatch& batch);
 
   std::uint64_t accesses() const { return accesses_; }      // all, sampled or not
   double rate() const;                                      // the final rate
@@ -76,6 +104,7 @@ class ShardsProfile {
   SampleSpec spec_;
   std::uint64_t accesses_ = 0;
   std::unique_ptr<Estimate> full_, half_[2];
+  std::unique_ptr<SampledBatch> batch_;  // access_lines()'s
 };
 
 // Miniature simulations of byte caches of any policy and geometry over one sampled line stream
@@ -86,6 +115,9 @@ class MiniSimulations {
   MiniSimulations(const std::vector<CacheConfig>& caches, double rate);
   ~MiniSimulations();
   void access_lines(std::span<const std::uint64_t> lines);
+  // The same for a batch already sampled at a rate of at least this one's; throws
+  // std::invalid_argument otherwise.
+  void access_sampled(const SampledBatch& batch);
 
   std::uint64_t accesses() const { return accesses_; }
   double miss_ratio(std::size_t cache) const;
@@ -100,6 +132,7 @@ class MiniSimulations {
   std::uint64_t accesses_ = 0;
   std::vector<Mini> minis_;
   std::vector<std::uint64_t> sampled_[3];  // this batch's sampled lines: all, half A, half B
+  std::unique_ptr<SampledBatch> batch_;    // access_lines()'s
 };
 
 // The cache of the same policy and ways scaled to `rate`: sets * rate sets (full: lines * rate

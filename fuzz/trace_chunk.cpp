@@ -5,7 +5,9 @@
 // and the harness wraps it in a well-formed file: metadata, the zstd frame of the records, the
 // chunk header with its CRC32C, a one-entry index and the footer, so every input reaches the
 // decoders exactly as a file whose checksums are sound would.
+#include <cstdlib>
 #include <cstring>
+#include <vector>
 #include <string>
 
 #include <zstd.h>
@@ -83,5 +85,31 @@ RASTRACE_FUZZ_TARGET(trace_chunk) {
     TraceReader reader(path);
     reader.set_read_ahead(false);
     reader.read_chunk(0);
+  });
+  if (kind != static_cast<std::uint8_t>(RecordKind::Texel)) return;
+  // Decoding the texel addresses alone (ReplayKinds::texel_details = false) fails cleanly or not
+  // at all, and wherever the full decoding succeeds it succeeds with the same addresses.
+  std::vector<TexelAccess> addresses;
+  bool addresses_decoded = false;
+  fuzz::expect_clean([&] {
+    TraceReader reader(path);
+    reader.set_read_ahead(false);
+    ReplayKinds kinds;
+    kinds.texel_details = false;
+    reader.set_read_ahead_kinds(kinds);
+    addresses = reader.read_chunk(0).texels;
+    addresses_decoded = true;
+  });
+  fuzz::expect_clean([&] {
+    TraceReader reader(path);
+    reader.set_read_ahead(false);
+    const std::vector<TexelAccess>& full = reader.read_chunk(0).texels;
+    if (!addresses_decoded || full.size() != addresses.size()) std::abort();
+    for (std::size_t i = 0; i < full.size(); ++i) {
+      const TexelAccess &a = addresses[i], &f = full[i];
+      if (a.texture != f.texture || a.level != f.level || a.x != f.x || a.y != f.y || a.pixel_x != 0 ||
+          a.pixel_y != 0 || a.triangle != 0)
+        std::abort();
+    }
   });
 }

@@ -336,7 +336,8 @@ std::string decode_vertex_records(std::span<const std::uint8_t> raw, std::uint32
   return "";
 }
 
-std::string decode_texel_records(std::span<const std::uint8_t> raw, std::uint32_t n, std::vector<TexelAccess>& out) {
+std::string decode_texel_records(std::span<const std::uint8_t> raw, std::uint32_t n, std::vector<TexelAccess>& out,
+                                 bool details) {
   Cursor c{raw.data(), raw.data() + raw.size(), {}};
   Column col[7];
   const std::uint64_t limits[7] = {0xFFFFFFFFu, 0xFFu, 0xFFFFFFFFu, 0xFFFFFFFFu, 0xFFFFu, 0xFFFFu, 0xFFFFFFFFu};
@@ -354,11 +355,26 @@ std::string decode_texel_records(std::span<const std::uint8_t> raw, std::uint32_
                       static_cast<std::uint32_t>(col[2].value), static_cast<std::uint32_t>(col[3].value),
                       static_cast<std::uint16_t>(col[4].value), static_cast<std::uint16_t>(col[5].value),
                       static_cast<std::uint32_t>(col[6].value)};
+    if (!details) {
+      first.pixel_x = first.pixel_y = 0;
+      first.triangle = 0;
+    }
     t[0] = first;
   }
+  // Without details only the address columns are decoded (and checked): at most the first four.
+  const int decoded = details ? opened : std::min(opened, 4);
   for (std::size_t begin = 1; begin < n; begin += kBlock) {
     const std::size_t end = std::min<std::size_t>(n, begin + kBlock);
-    if (all) {
+    if (all && !details) {
+      decode_range<TexelAccess, std::uint32_t, &TexelAccess::texture>(col[0], t, begin, end);
+      decode_range<TexelAccess, std::uint8_t, &TexelAccess::level>(col[1], t, begin, end);
+      decode_range<TexelAccess, std::uint32_t, &TexelAccess::x>(col[2], t, begin, end);
+      decode_range<TexelAccess, std::uint32_t, &TexelAccess::y>(col[3], t, begin, end);
+      for (std::size_t i = begin; i < end; ++i) {
+        t[i].pixel_x = t[i].pixel_y = 0;
+        t[i].triangle = 0;
+      }
+    } else if (all) {
       decode_range<TexelAccess, std::uint32_t, &TexelAccess::texture>(col[0], t, begin, end);
       decode_range<TexelAccess, std::uint8_t, &TexelAccess::level>(col[1], t, begin, end);
       decode_range<TexelAccess, std::uint32_t, &TexelAccess::x>(col[2], t, begin, end);
@@ -372,11 +388,11 @@ std::string decode_texel_records(std::span<const std::uint8_t> raw, std::uint32_
       if (opened > 1) decode_range<TexelAccess, std::uint8_t, &TexelAccess::level>(col[1], t, begin, end);
       if (opened > 2) decode_range<TexelAccess, std::uint32_t, &TexelAccess::x>(col[2], t, begin, end);
       if (opened > 3) decode_range<TexelAccess, std::uint32_t, &TexelAccess::y>(col[3], t, begin, end);
-      if (opened > 4) decode_range<TexelAccess, std::uint16_t, &TexelAccess::pixel_x>(col[4], t, begin, end);
-      if (opened > 5) decode_range<TexelAccess, std::uint16_t, &TexelAccess::pixel_y>(col[5], t, begin, end);
+      if (decoded > 4) decode_range<TexelAccess, std::uint16_t, &TexelAccess::pixel_x>(col[4], t, begin, end);
+      if (decoded > 5) decode_range<TexelAccess, std::uint16_t, &TexelAccess::pixel_y>(col[5], t, begin, end);
     }
   }
-  for (int k = 0; k < opened; ++k)
+  for (int k = 0; k < decoded; ++k)
     if (std::string error = column_error(col[k]); !error.empty()) return error;
   if (!all) return c.error;
   if (c.p != c.end) return "unexpected bytes after the records";

@@ -32,8 +32,11 @@ void encode_framebuffer_records(std::span<const FramebufferAccess> accesses, std
 // success, or what was wrong (the caller names the file and chunk).
 std::string decode_vertex_records(std::span<const std::uint8_t> raw, std::uint32_t records, DrawInfo& draw,
                                   std::vector<VertexFetch>& out);
+// details = false decodes texture, level, x and y only (what a cache simulation reads): pixel_x,
+// pixel_y and triangle are set to 0, and their columns, whose bytes must still all be there, are
+// neither decoded nor range-checked (the chunk's checksum covers them).
 std::string decode_texel_records(std::span<const std::uint8_t> raw, std::uint32_t records,
-                                 std::vector<TexelAccess>& out);
+                                 std::vector<TexelAccess>& out, bool details = true);
 std::string decode_address_records(std::span<const std::uint8_t> raw, std::uint32_t records,
                                    std::vector<AddressAccess>& out);
 std::string decode_framebuffer_records(std::span<const std::uint8_t> raw, std::uint32_t records,

@@ -125,7 +125,7 @@ ChunkHeader read_checked_payload(const TraceLayout& file, ChunkSource& src, std:
 }
 
 // Reads, checks and decodes chunk i into `out`; throws the chunk's InputError.
-void load_chunk(const TraceLayout& file, ChunkSource& src, std::size_t i, DecodedChunk& out) {
+void load_chunk(const TraceLayout& file, ChunkSource& src, std::size_t i, DecodedChunk& out, bool texel_details) {
   const std::string& path = file.path;
   const ChunkInfo& info = file.chunks[i];
   const std::string where = "chunk " + std::to_string(i) + ": ";
@@ -144,7 +144,7 @@ void load_chunk(const TraceLayout& file, ChunkSource& src, std::size_t i, Decode
       error = decode_vertex_records(src.raw, records, out.draw, out.vertices);
       break;
     case RecordKind::Texel:
-      error = decode_texel_records(src.raw, records, out.texels);
+      error = decode_texel_records(src.raw, records, out.texels, texel_details);
       break;
     case RecordKind::Framebuffer:
       error = decode_framebuffer_records(src.raw, records, out.framebuffer);
@@ -175,6 +175,7 @@ struct Slot {
   State state = State::Free;
   std::size_t chunk = kNone;
   bool drop = false;  // busy on a chunk nobody expects any more: free it when done
+  bool details = true;  // decoded with texel details (ReplayKinds::texel_details)
   DecodedChunk decoded;
   std::exception_ptr error;
 };
@@ -189,11 +190,14 @@ struct TraceReader::ReadState {
   // Opened with the caller's stream, so both read the same file even if the path is replaced
   // (written atomically by rename) before the first in-order read starts the thread.
   std::ifstream ahead_stream;
-  std::array<Slot, 3> slots;  // one held by the caller, one per decoding thread
+  // One held by the caller, one per decoding thread, and two more: the read-ahead thread keeps
+  // decoding while the caller works on a chunk it decoded itself (it then finds two ready).
+  std::array<Slot, 5> slots;
   std::size_t held = kNone;
   bool enabled = read_ahead_by_default();
   bool broken = false;  // the thread could not start: read in the caller only
   bool wanted[5] = {false, true, true, true, true};
+  bool texel_details = true;
   std::size_t last = kNone;    // the chunk read last
   std::size_t cursor = kNone;  // the next chunk to read ahead, kNone: none
   bool stop = false;
@@ -215,7 +219,9 @@ struct TraceReader::ReadState {
 
   Slot* find(std::size_t chunk) {
     for (Slot& s : slots)
-      if (s.chunk == chunk && (s.state == Slot::State::Busy || s.state == Slot::State::Ready)) return &s;
+      if (s.chunk == chunk && s.details == texel_details &&
+          (s.state == Slot::State::Busy || s.state == Slot::State::Ready))
+        return &s;
     return nullptr;
   }
   Slot* free_slot() {
@@ -246,10 +252,11 @@ struct TraceReader::ReadState {
   // Decodes chunk `slot->chunk` into the Busy slot, without the lock; then marks it Ready.
   void decode(const TraceLayout& file, ChunkSource& src, Slot* slot, std::unique_lock<std::mutex>& lock) {
     const std::size_t chunk = slot->chunk;
+    const bool details = slot->details = texel_details;
     lock.unlock();
     std::exception_ptr error;
     try {
-      load_chunk(file, src, chunk, slot->decoded);
+      load_chunk(file, src, chunk, slot->decoded, details);
     } catch (...) {
       error = std::current_exception();
     }
@@ -448,6 +455,7 @@ void TraceReader::set_read_ahead_kinds(ReplayKinds kinds) {
   s.wanted[static_cast<int>(RecordKind::Texel)] = kinds.texels;
   s.wanted[static_cast<int>(RecordKind::Address)] = kinds.addresses;
   s.wanted[static_cast<int>(RecordKind::Framebuffer)] = kinds.framebuffer;
+  s.texel_details = kinds.texel_details;
   s.drop_read_ahead();
 }
 

@@ -33,6 +33,10 @@ struct ReplayKinds {
   bool texels = true;
   bool addresses = true;
   bool framebuffer = true;
+  // Texel records' pixel position and triangle. False: a trace file's reader leaves them 0, their
+  // columns checked by the chunk checksum but not decoded (for consumers of texel addresses alone;
+  // text formats still carry them).
+  bool texel_details = true;
 };
 
 // Only the vector of the chunk's kind holds this chunk's records; the others are stale.
@@ -73,12 +77,12 @@ class TraceReader {
   // Read-ahead. Once chunks are read in file order (chunk i, then the next chunk of the kinds
   // below), a second thread with its own stream and zstd context reads, checks and decodes the
   // following chunks while the caller works on chunk i, and a caller that would wait for it
-  // decodes the chunk after instead. At most 3 decoded chunks are in memory. A read out of order
+  // decodes the chunk after instead. At most 5 decoded chunks are in memory. A read out of order
   // drops what was read ahead. On by default when the machine has 2 or more hardware threads
   // and the environment does not set RASTRACE_READ_AHEAD=0.
   void set_read_ahead(bool enabled);
   // The kinds the caller will read (default: all); chunks of other kinds are not read ahead and
-  // skipping them still counts as reading in order.
+  // skipping them still counts as reading in order. Also whether texel details are decoded.
   void set_read_ahead_kinds(ReplayKinds kinds);
 
   // True when `path` starts with the trace magic (to tell traces from CSV or din files).
@@ -138,6 +142,10 @@ class TexelTraceReader {
  public:
   explicit TexelTraceReader(const std::string& path) : reader_(path) {
     reader_.set_read_ahead_kinds({false, true, false, false});
+  }
+  // Decode texture, level, x and y only (pixel_x, pixel_y and triangle read as 0; ReplayKinds).
+  void set_addresses_only(bool addresses_only) {
+    reader_.set_read_ahead_kinds({false, true, false, false, !addresses_only});
   }
   const TraceMetadata& metadata() const { return reader_.metadata(); }
   std::uint64_t records() const { return reader_.records(RecordKind::Texel); }

@@ -89,6 +89,73 @@ TEST(Shards, MiniSimulationsAtRateOneAreTheCachesThemselves) {
   }
 }
 
+TEST(Shards, ASampledBatchKeepsExactlyTheLinesWhoseHashIsBelowTheThresholdInOrder) {
+  // Batches of changing sizes (the buffers grow and are reused), odd lengths for the vector
+  // clone's tail, random lines and a rendered frame's.
+  std::mt19937_64 random(7);
+  std::vector<std::uint64_t> lines = frame_lines(128, 64);
+  for (int i = 0; i < 5000; ++i) lines.push_back(random());
+  for (const double rate : {0.01, 0.3, 1.0}) {
+    SampledBatch batch(rate);
+    const std::uint64_t threshold = sample_threshold(rate);
+    std::size_t kept_total = 0;
+    for (std::size_t begin = 0, n = 1; begin < lines.size(); begin += n, n = n * 3 % 9973 + 1) {
+      const std::span<const std::uint64_t> part(lines.data() + begin, std::min(n, lines.size() - begin));
+      batch.sample(part);
+      std::vector<std::uint64_t> expected;
+      for (const std::uint64_t line : part)
+        if (rate >= 1.0 || sample_hash(line) < threshold) expected.push_back(line);
+      ASSERT_EQ(batch.accesses(), part.size());
+      ASSERT_EQ(std::vector<std::uint64_t>(batch.lines().begin(), batch.lines().end()), expected) << rate;
+      for (std::size_t i = 0; i < expected.size(); ++i) ASSERT_EQ(batch.hashes()[i], sample_hash(expected[i]));
+      kept_total += expected.size();
+    }
+    if (rate == 1.0) {
+      EXPECT_EQ(kept_total, lines.size());
+    }
+    if (rate == 0.01) {
+      EXPECT_LT(kept_total, lines.size() / 20);
+    }
+  }
+}
+
+TEST(Shards, OneBatchSampledAtAHigherRateFeedsEveryEstimatorAsItsOwnSamplingWould) {
+  const auto lines = frame_lines(256, 64);
+  std::vector<CacheConfig> caches;
+  for (const ReplacementPolicy policy : {ReplacementPolicy::Fifo, ReplacementPolicy::Random})
+    for (const std::uint32_t assoc : {0u, 4u}) caches.push_back({64 * 1024, 64, assoc, policy, 5});
+  ShardsProfile own({0.05, 0}), shared({0.05, 0}), own_fixed({0.5, 256}), shared_fixed({0.5, 256});
+  MiniSimulations own_minis(caches, 0.05), shared_minis(caches, 0.05);
+  SampledBatch at_rate(0.05), higher(0.5);
+  for (std::size_t begin = 0; begin < lines.size(); begin += 4096) {
+    const std::span<const std::uint64_t> part(lines.data() + begin, std::min<std::size_t>(4096, lines.size() - begin));
+    own.access_lines(part);
+    own_fixed.access_lines(part);
+    own_minis.access_lines(part);
+    at_rate.sample(part);
+    higher.sample(part);
+    shared.access_sampled(higher);
+    shared_fixed.access_sampled(higher);
+    shared_minis.access_sampled(at_rate);
+  }
+  EXPECT_EQ(shared.accesses(), lines.size());
+  for (const std::uint64_t c : cache_sizes()) {
+    ASSERT_EQ(shared.miss_ratio(c), own.miss_ratio(c)) << c;
+    ASSERT_EQ(shared.expected_error(c), own.expected_error(c)) << c;
+    ASSERT_EQ(shared_fixed.miss_ratio(c), own_fixed.miss_ratio(c)) << c;
+  }
+  EXPECT_EQ(shared_fixed.rate(), own_fixed.rate());
+  for (std::size_t i = 0; i < caches.size(); ++i) {
+    ASSERT_EQ(shared_minis.miss_ratio(i), own_minis.miss_ratio(i)) << describe(caches[i]);
+    ASSERT_EQ(shared_minis.expected_error(i), own_minis.expected_error(i)) << describe(caches[i]);
+  }
+  // A batch sampled more thinly than an estimator would miss lines it must see.
+  SampledBatch thinner(0.01);
+  thinner.sample(lines);
+  EXPECT_THROW(shared.access_sampled(thinner), std::invalid_argument);
+  EXPECT_THROW(shared_minis.access_sampled(thinner), std::invalid_argument);
+}
+
 TEST(Shards, ScaledCachesKeepWaysAndScaleSetsOrLines) {
   // 256 sets of 4 ways at 1%: 2.56 -> 3 sets; 1024 lines fully associative: 10.24 -> 10 lines.
   EXPECT_EQ(scale_cache({64 * 1024, 64, 4, ReplacementPolicy::Fifo, 1}, 0.01).size_bytes, 3u * 4 * 64);

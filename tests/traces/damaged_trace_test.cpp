@@ -69,6 +69,21 @@ std::string texel_replay_error(const std::string& path) {
   }
 }
 
+// Replays the texel chunks for their addresses alone, as `sweep --sample` does: the pixel and
+// triangle columns are not decoded, so only the checksum can find their damage.
+std::string texel_address_replay_error(const std::string& path) {
+  try {
+    TraceReader reader(path);
+    MemorySink sink;
+    ReplayKinds kinds{false, true, false, false};
+    kinds.texel_details = false;
+    replay_trace(reader, sink, kinds);
+    return "";
+  } catch (const InputError& e) {
+    return e.what();
+  }
+}
+
 // The byte ranges of the chunks (header and payload), to tell which chunk a damaged byte is in.
 std::vector<std::pair<std::uint64_t, std::uint64_t>> chunk_ranges(const std::string& path) {
   TraceReader reader(path);
@@ -157,6 +172,31 @@ TEST_F(DamagedTrace, EverySingleBitFlipOfATwoFrameTraceIsAnErrorNamingItsByteAnd
   std::memcpy(&index_offset, bytes.data() + bytes.size() - kFooterBytes, 8);
   ranges.emplace_back(index_offset, bytes.size());
   expect_every_bit_flip_named(trace, ranges);
+}
+
+TEST_F(DamagedTrace, EveryBitFlipOfATexelChunkIsFoundWhenOnlyItsAddressesAreDecoded) {
+  const TempDir dir;
+  const std::string& trace = small_trace();
+  const std::string sound = read_bytes(trace);
+  ASSERT_EQ(texel_address_replay_error(trace), "");
+  const auto chunks = chunk_ranges(trace);
+  const TraceReader reader(trace);
+  const std::string damaged = dir.file("damaged.rtrace");
+  std::uint64_t flips = 0;
+  for (std::size_t c = 0; c < chunks.size(); ++c) {
+    if (reader.chunks()[c].kind != RecordKind::Texel) continue;
+    // Two bits of every byte (the exhaustive flips of the whole file are the tests above).
+    for (std::uint64_t byte = chunks[c].first; byte < chunks[c].second; ++byte)
+      for (const int bit : {static_cast<int>(byte % 8), static_cast<int>((byte + 3) % 8)}) {
+        std::string bytes = sound;
+        bytes[byte] = static_cast<char>(bytes[byte] ^ (1 << bit));
+        write_bytes(damaged, bytes);
+        ASSERT_THAT(texel_address_replay_error(damaged), HasSubstr(": chunk " + std::to_string(c) + ": "))
+            << "bit " << bit << " of byte " << byte;
+        ++flips;
+      }
+  }
+  EXPECT_GT(flips, 0u);
 }
 
 TEST_F(DamagedTrace, EveryTruncationOfASmallRenderedTraceIsAnError) {

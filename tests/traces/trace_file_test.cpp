@@ -168,6 +168,32 @@ TEST(ChunkCodec, DecodersReportGarbageAsErrorsWithoutReadingPastTheEnd) {
   EXPECT_GE(errors, 100);  // every truncation at least; flipped delta bytes may decode to other values
 }
 
+TEST(ChunkCodec, AddressOnlyTexelDecodingGivesTheAddressesAndZeroDetails) {
+  std::vector<TexelAccess> texels = sample_events().texels;
+  // Large jumps in every column (escaped deltas) and the extremes of each field.
+  texels.push_back({0xFFFFFFFFu, 255, 0xFFFFFFFFu, 0, 0xFFFF, 0, 0xFFFFFFFFu});
+  texels.push_back({0, 0, 0, 0xFFFFFFFFu, 0, 0xFFFF, 0});
+  std::string raw;
+  encode_texel_records(texels, raw);
+  const std::span<const std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size());
+  const auto n = static_cast<std::uint32_t>(texels.size());
+  std::vector<TexelAccess> full, addresses(3, TexelAccess{1, 1, 1, 1, 7, 7, 7});  // stale values must go
+  ASSERT_EQ(decode_texel_records(bytes, n, full), "");
+  ASSERT_EQ(decode_texel_records(bytes, n, addresses, false), "");
+  ASSERT_EQ(addresses.size(), texels.size());
+  for (std::size_t i = 0; i < texels.size(); ++i) {
+    const TexelAccess &a = addresses[i], &t = texels[i];
+    ASSERT_TRUE(a.texture == t.texture && a.level == t.level && a.x == t.x && a.y == t.y) << i;
+    ASSERT_TRUE(a.pixel_x == 0 && a.pixel_y == 0 && a.triangle == 0) << i;
+    ASSERT_EQ(full[i].triangle, t.triangle) << i;
+  }
+  // The skipped columns' bytes must still all be there: a cut inside the last one is an error.
+  EXPECT_THAT(decode_texel_records(bytes.first(bytes.size() - 1), n, addresses, false),
+              HasSubstr("ends inside the triangle"));
+  // And a cut inside an address column names it, as the full decoding does.
+  EXPECT_THAT(decode_texel_records(bytes.first(20), n, addresses, false), HasSubstr("ends inside the texture"));
+}
+
 TEST(TraceFile, RoundTripKeepsEveryRecordAndTheMetadata) {
   const testing::TempDir dir;
   const std::string path = dir.file("roundtrip.rtrace");
@@ -274,6 +300,46 @@ TEST(TraceFile, TruncatedFileNamesTheTruncatedChunkAndItsOffset) {
   // Cut exactly between chunks: no index.
   put_bytes(path, bytes.substr(0, third.offset));
   EXPECT_THAT(open_error(path), HasSubstr("no chunk index and footer after chunk 2"));
+}
+
+TEST(TraceFile, AddressOnlyTexelReadersSeeTheSameAddressesAndStillCheckEveryChunk) {
+  const testing::TempDir dir;
+  const std::string path = dir.file("addresses.rtrace");
+  write_sample(path, 100);
+  const MemorySink events = sample_events();
+  for (const bool ahead : {false, true}) {
+    TexelTraceReader texels(path);
+    texels.set_read_ahead(ahead);
+    texels.set_addresses_only(true);
+    std::span<const TexelAccess> batch;
+    std::size_t i = 0;
+    while (texels.next(batch))
+      for (const TexelAccess& a : batch) {
+        const TexelAccess& t = events.texels.at(i++);
+        ASSERT_TRUE(a.texture == t.texture && a.level == t.level && a.x == t.x && a.y == t.y) << i;
+        ASSERT_TRUE(a.pixel_x == 0 && a.pixel_y == 0 && a.triangle == 0) << i;
+      }
+    EXPECT_EQ(i, events.texels.size()) << "read-ahead " << ahead;
+  }
+  // A flipped byte in a texel chunk fails its checksum whatever columns the reader decodes.
+  std::string bytes = bytes_of(path);
+  const TraceReader clean(path);
+  std::size_t chunk = 0;
+  while (clean.chunks()[chunk].kind != RecordKind::Texel) ++chunk;
+  const std::uint64_t offset = clean.chunks()[chunk].offset;
+  bytes[offset + kChunkHeaderBytes + clean.chunks().size() % 5] ^= 0x10;
+  put_bytes(path, bytes);
+  TexelTraceReader damaged(path);
+  damaged.set_addresses_only(true);
+  std::span<const TexelAccess> batch;
+  try {
+    while (damaged.next(batch)) {
+    }
+    ADD_FAILURE() << "the damaged chunk was read";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("byte " + std::to_string(offset) + ": chunk " + std::to_string(chunk) +
+                                        ": checksum mismatch"));
+  }
 }
 
 TEST(TraceFile, CorruptedPayloadIsAChecksumMismatchNamingTheChunk) {
