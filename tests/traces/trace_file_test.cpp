@@ -169,7 +169,8 @@ TEST(ChunkCodec, DecodersReportGarbageAsErrorsWithoutReadingPastTheEnd) {
 }
 
 TEST(ChunkCodec, AddressOnlyTexelDecodingGivesTheAddressesAndZeroDetails) {
-  std::vector<TexelAccess> texels = sample_events().texels;
+  const auto sample = sample_events().texels;
+  std::vector<TexelAccess> texels(sample.begin(), sample.end());
   // Large jumps in every column (escaped deltas) and the extremes of each field.
   texels.push_back({0xFFFFFFFFu, 255, 0xFFFFFFFFu, 0, 0xFFFF, 0, 0xFFFFFFFFu});
   texels.push_back({0, 0, 0, 0xFFFFFFFFu, 0, 0xFFFF, 0});
