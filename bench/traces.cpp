@@ -140,40 +140,47 @@ BENCHMARK(BM_TraceReadDecode_File)->ArgName("ahead")->Arg(0)->Arg(1)->Unit(bench
 // The two halves of reading RASTRACE_BENCH_TRACE, one thread, CPU time: zstd alone (arg 0) and
 // column decoding alone (arg 1), on the chunk payloads held in memory. zstd alone bounds what
 // one thread can reach whatever the column decoder does.
+// One chunk of a trace file as stored: its index entry, its zstd payload and that payload
+// decompressed (the format's raw record columns).
+struct StoredChunk {
+  ChunkInfo info;
+  std::vector<char> stored;
+  std::vector<std::uint8_t> raw;
+};
+
+// Every chunk of the trace at `path`, read and decompressed once, before any timing.
+std::vector<StoredChunk> read_stored_chunks(const char* path) {
+  std::vector<StoredChunk> chunks;
+  const TraceReader reader(path);
+  std::ifstream in(path, std::ios::binary);
+  for (const ChunkInfo& c : reader.chunks()) {
+    char header[kChunkHeaderBytes];  // trace_format.h: payload bytes at 12, raw bytes at 16
+    in.seekg(static_cast<std::streamoff>(c.offset));
+    in.read(header, kChunkHeaderBytes);
+    std::uint32_t stored = 0, raw = 0;
+    std::memcpy(&stored, header + 12, 4);
+    std::memcpy(&raw, header + 16, 4);
+    StoredChunk chunk{c, std::vector<char>(stored), std::vector<std::uint8_t>(raw)};
+    in.read(chunk.stored.data(), stored);
+    ZSTD_decompress(chunk.raw.data(), raw, chunk.stored.data(), stored);
+    chunks.push_back(std::move(chunk));
+  }
+  return chunks;
+}
+
 void BM_TraceChunkStages_File(benchmark::State& state) {
   const char* path = std::getenv("RASTRACE_BENCH_TRACE");
   if (!path) {
     state.SkipWithError("set RASTRACE_BENCH_TRACE to a trace file");
     return;
   }
-  struct Payload {
-    ChunkInfo info;
-    std::vector<char> stored;
-    std::vector<std::uint8_t> raw;
-  };
-  std::vector<Payload> payloads;
-  {
-    const TraceReader reader(path);
-    std::ifstream in(path, std::ios::binary);
-    for (const ChunkInfo& c : reader.chunks()) {
-      char header[kChunkHeaderBytes];  // trace_format.h: payload bytes at 12, raw bytes at 16
-      in.seekg(static_cast<std::streamoff>(c.offset));
-      in.read(header, kChunkHeaderBytes);
-      std::uint32_t stored = 0, raw = 0;
-      std::memcpy(&stored, header + 12, 4);
-      std::memcpy(&raw, header + 16, 4);
-      Payload p{c, std::vector<char>(stored), std::vector<std::uint8_t>(raw)};
-      in.read(p.stored.data(), stored);
-      ZSTD_decompress(p.raw.data(), raw, p.stored.data(), stored);
-      payloads.push_back(std::move(p));
-    }
-  }
+  const std::vector<StoredChunk> payloads = read_stored_chunks(path);
   ZSTD_DCtx* dctx = ZSTD_createDCtx();
   std::vector<std::uint8_t> raw;
   DecodedChunk out;
   std::uint64_t records = 0;
   for (auto _ : state) {
-    for (const Payload& p : payloads) {
+    for (const StoredChunk& p : payloads) {
       if (state.range(0) == 0) {
         raw.resize(p.raw.size());
         benchmark::DoNotOptimize(ZSTD_decompressDCtx(dctx, raw.data(), raw.size(), p.stored.data(), p.stored.size()));
@@ -193,6 +200,46 @@ void BM_TraceChunkStages_File(benchmark::State& state) {
 }
 BENCHMARK(BM_TraceChunkStages_File)->ArgName("stage")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
+// Bytes of raw records compressed again by an experiment, with the records they hold.
+struct Recompressed {
+  std::vector<char> compressed;
+  std::size_t raw = 0;
+  std::uint32_t records = 0;
+};
+
+// Compresses bytes [begin, end) of `chunk`'s raw payload at zstd `level`.
+Recompressed recompress(const StoredChunk& chunk, std::size_t begin, std::size_t end, int level) {
+  Recompressed r;
+  r.raw = end - begin;
+  r.records = chunk.info.records;
+  r.compressed.resize(ZSTD_compressBound(r.raw));
+  r.compressed.resize(ZSTD_compress(r.compressed.data(), r.compressed.size(), chunk.raw.data() + begin, r.raw, level));
+  return r;
+}
+
+// Times zstd alone on `payloads` (one thread, CPU time): records per second and the compressed
+// bytes per record.
+void time_decompression(benchmark::State& state, const std::vector<Recompressed>& payloads) {
+  std::uint64_t file_records = 0, compressed_bytes = 0;
+  for (const Recompressed& p : payloads) {
+    file_records += p.records;
+    compressed_bytes += p.compressed.size();
+  }
+  ZSTD_DCtx* dctx = ZSTD_createDCtx();
+  std::vector<char> raw;
+  std::uint64_t records = 0;
+  for (auto _ : state)
+    for (const Recompressed& p : payloads) {
+      raw.resize(p.raw);
+      benchmark::DoNotOptimize(
+          ZSTD_decompressDCtx(dctx, raw.data(), raw.size(), p.compressed.data(), p.compressed.size()));
+      records += p.records;
+    }
+  ZSTD_freeDCtx(dctx);
+  state.SetItemsProcessed(static_cast<std::int64_t>(records));
+  state.counters["bytes_per_record"] = double(compressed_bytes) / double(std::max<std::uint64_t>(1, file_records));
+}
+
 // zstd alone, one thread, CPU time, on the raw payloads of RASTRACE_BENCH_TRACE compressed at the
 // level given (the writer's default is 3).
 void BM_TraceZstdLevel_File(benchmark::State& state) {
@@ -201,61 +248,21 @@ void BM_TraceZstdLevel_File(benchmark::State& state) {
     state.SkipWithError("set RASTRACE_BENCH_TRACE to a trace file");
     return;
   }
-  const int level = static_cast<int>(state.range(0));
-  struct Payload {
-    std::vector<char> compressed;
-    std::size_t raw = 0;
-    std::uint32_t records = 0;
-  };
-  std::vector<Payload> payloads;
-  std::uint64_t file_records = 0, compressed_bytes = 0;
-  {
-    const TraceReader reader(path);
-    std::ifstream in(path, std::ios::binary);
-    for (const ChunkInfo& c : reader.chunks()) {
-      char header[kChunkHeaderBytes];
-      in.seekg(static_cast<std::streamoff>(c.offset));
-      in.read(header, kChunkHeaderBytes);
-      std::uint32_t stored = 0, raw = 0;
-      std::memcpy(&stored, header + 12, 4);
-      std::memcpy(&raw, header + 16, 4);
-      std::vector<char> original(stored), decoded(raw);
-      in.read(original.data(), stored);
-      ZSTD_decompress(decoded.data(), raw, original.data(), stored);
-      Payload p;
-      p.compressed.resize(ZSTD_compressBound(raw));
-      p.compressed.resize(ZSTD_compress(p.compressed.data(), p.compressed.size(), decoded.data(), raw, level));
-      p.raw = raw;
-      p.records = c.records;
-      compressed_bytes += p.compressed.size();
-      file_records += c.records;
-      payloads.push_back(std::move(p));
-    }
-  }
-  ZSTD_DCtx* dctx = ZSTD_createDCtx();
-  std::vector<char> raw;
-  std::uint64_t records = 0;
-  for (auto _ : state)
-    for (const Payload& p : payloads) {
-      raw.resize(p.raw);
-      benchmark::DoNotOptimize(
-          ZSTD_decompressDCtx(dctx, raw.data(), raw.size(), p.compressed.data(), p.compressed.size()));
-      records += p.records;
-    }
-  ZSTD_freeDCtx(dctx);
-  state.SetItemsProcessed(static_cast<std::int64_t>(records));
-  state.counters["bytes_per_record"] = double(compressed_bytes) / double(file_records);
+  std::vector<Recompressed> payloads;
+  for (const StoredChunk& chunk : read_stored_chunks(path))
+    payloads.push_back(recompress(chunk, 0, chunk.raw.size(), static_cast<int>(state.range(0))));
+  time_decompression(state, payloads);
 }
 BENCHMARK(BM_TraceZstdLevel_File)->ArgName("level")->Arg(-5)->Arg(1)->Arg(3)->Arg(9)->Arg(19)->Unit(benchmark::kMillisecond);
 
 // The byte ranges of the 7 columns of a decoded texel payload (chunk_codec.h: mode, first value,
 // then the deltas; mode 0x81 adds an escape count and the escaped deltas).
-std::vector<std::pair<std::size_t, std::size_t>> texel_columns(const std::vector<char>& raw, std::uint32_t n) {
+std::vector<std::pair<std::size_t, std::size_t>> texel_columns(const std::vector<std::uint8_t>& raw, std::uint32_t n) {
   std::vector<std::pair<std::size_t, std::size_t>> columns;
   std::size_t at = 0;
   for (int k = 0; k < 7; ++k) {
     const std::size_t begin = at;
-    const std::uint8_t mode = static_cast<std::uint8_t>(raw.at(at));
+    const std::uint8_t mode = raw.at(at);
     at += 9;
     const std::size_t deltas = n ? n - 1 : 0;
     if (mode == 0x81) {
@@ -281,53 +288,15 @@ void BM_TraceColumnGroupZstd_File(benchmark::State& state) {
     return;
   }
   const int group = static_cast<int>(state.range(0));
-  struct Payload {
-    std::vector<char> compressed;
-    std::size_t raw = 0;
-    std::uint32_t records = 0;
-  };
-  std::vector<Payload> payloads;
-  std::uint64_t file_records = 0, compressed_bytes = 0;
-  {
-    const TraceReader reader(path);
-    std::ifstream in(path, std::ios::binary);
-    for (const ChunkInfo& c : reader.chunks()) {
-      if (c.kind != RecordKind::Texel) continue;
-      char header[kChunkHeaderBytes];
-      in.seekg(static_cast<std::streamoff>(c.offset));
-      in.read(header, kChunkHeaderBytes);
-      std::uint32_t stored = 0, raw = 0;
-      std::memcpy(&stored, header + 12, 4);
-      std::memcpy(&raw, header + 16, 4);
-      std::vector<char> original(stored), decoded(raw);
-      in.read(original.data(), stored);
-      ZSTD_decompress(decoded.data(), raw, original.data(), stored);
-      const auto columns = texel_columns(decoded, c.records);
-      const std::size_t begin = group == 1 ? columns[4].first : 0;
-      const std::size_t end = group == 0 ? columns[3].second : columns[6].second;
-      Payload p;
-      p.raw = end - begin;
-      p.compressed.resize(ZSTD_compressBound(p.raw));
-      p.compressed.resize(ZSTD_compress(p.compressed.data(), p.compressed.size(), decoded.data() + begin, p.raw, 3));
-      p.records = c.records;
-      compressed_bytes += p.compressed.size();
-      file_records += c.records;
-      payloads.push_back(std::move(p));
-    }
+  std::vector<Recompressed> payloads;
+  for (const StoredChunk& chunk : read_stored_chunks(path)) {
+    if (chunk.info.kind != RecordKind::Texel) continue;
+    const auto columns = texel_columns(chunk.raw, chunk.info.records);
+    const std::size_t begin = group == 1 ? columns[4].first : 0;
+    const std::size_t end = group == 0 ? columns[3].second : columns[6].second;
+    payloads.push_back(recompress(chunk, begin, end, 3));
   }
-  ZSTD_DCtx* dctx = ZSTD_createDCtx();
-  std::vector<char> raw;
-  std::uint64_t records = 0;
-  for (auto _ : state)
-    for (const Payload& p : payloads) {
-      raw.resize(p.raw);
-      benchmark::DoNotOptimize(
-          ZSTD_decompressDCtx(dctx, raw.data(), raw.size(), p.compressed.data(), p.compressed.size()));
-      records += p.records;
-    }
-  ZSTD_freeDCtx(dctx);
-  state.SetItemsProcessed(static_cast<std::int64_t>(records));
-  state.counters["bytes_per_record"] = double(compressed_bytes) / double(std::max<std::uint64_t>(1, file_records));
+  time_decompression(state, payloads);
   state.SetLabel(group == 0 ? "texture, level, x, y" : group == 1 ? "pixel x, pixel y, triangle" : "all 7 columns");
 }
 BENCHMARK(BM_TraceColumnGroupZstd_File)->ArgName("group")->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);

@@ -67,16 +67,6 @@ std::string read_text(const std::string& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// The names in `folder` that start with ".tmp." (temporaries of the atomic writers).
-std::vector<std::string> temporaries(const std::string& folder) {
-  std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-    const std::string name = entry.path().filename();
-    if (name.starts_with(".tmp.") || name.ends_with(".tmp")) names.push_back(name);
-  }
-  return names;
-}
-
 // Every regular file under `folder`, as paths relative to it.
 std::vector<std::string> files_under(const std::string& folder) {
   std::vector<std::string> names;
@@ -86,12 +76,15 @@ std::vector<std::string> files_under(const std::string& folder) {
   return names;
 }
 
-// The temporaries of the atomic writers anywhere under `folder`.
-std::vector<std::string> temporaries_under(const std::string& folder) {
+// The temporaries of the atomic writers (names starting with ".tmp." or ending in ".tmp") of any
+// kind anywhere under `folder`, as paths relative to it.
+std::vector<std::string> temporaries(const std::string& folder) {
   std::vector<std::string> names;
-  for (const std::string& name : files_under(folder)) {
-    const std::string base = std::filesystem::path(name).filename();
-    if (base.starts_with(".tmp.") || base.ends_with(".tmp")) names.push_back(name);
+  if (!std::filesystem::exists(folder)) return names;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(folder)) {
+    const std::string base = entry.path().filename();
+    if (base.starts_with(".tmp.") || base.ends_with(".tmp"))
+      names.push_back(std::filesystem::relative(entry.path(), folder).string());
   }
   return names;
 }
@@ -142,7 +135,7 @@ class FullDisk : public ::testing::Test {
     const std::string message = read_text(err);
     EXPECT_EQ(code, 1) << args.front() << ": " << message;
     EXPECT_THAT(message, HasSubstr("write failed")) << args.front();
-    EXPECT_THAT(temporaries_under(limited), ::testing::IsEmpty()) << args.front();
+    EXPECT_THAT(temporaries(limited), ::testing::IsEmpty()) << args.front();
     if (!index_file.empty()) {
       EXPECT_FALSE(std::filesystem::exists(std::filesystem::path(limited) / index_file)) << index_file;
     }
