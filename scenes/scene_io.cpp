@@ -190,19 +190,42 @@ class SceneReader {
     return path;
   }
 
-  Mesh procedural_mesh(const json& value, const std::string& where) const {
+  // Counts a procedural mesh's bytes (positions, normals, UVs, indices, face materials) into the
+  // scene's total before it is generated, through the one allocation limit: each side is bounded,
+  // but a scene of many 4096 x 4096 grids is not.
+  void reserve_procedural_mesh(std::uint64_t vertices, std::uint64_t triangles, const std::string& where) {
+    constexpr std::uint64_t kVertexBytes = sizeof(glm::vec3) * 2 + sizeof(glm::vec2);
+    constexpr std::uint64_t kTriangleBytes = sizeof(std::uint32_t) * 4;
+    procedural_mesh_bytes_ += vertices * kVertexBytes + triangles * kTriangleBytes;
+    checked_bytes(procedural_mesh_bytes_, 1, file_ + ": " + where + ": the scene's procedural meshes");
+  }
+
+  Mesh procedural_mesh(const json& value, const std::string& where) {
     allow_keys(value, where, {"procedural", "width", "height", "subdivisions", "segments", "repeat"});
     const std::string name = string(required(value, where, "procedural"), where + ".procedural");
     const auto get = [&](const char* key, int fallback, int lo, int hi) {
       return value.contains(key) ? integer(value[key], where + "." + key, lo, hi) : fallback;
     };
-    if (name == "grid") return make_grid(get("width", 16, 1, 4096), get("height", 16, 1, 4096));
-    if (name == "icosphere") return make_icosphere(get("subdivisions", 3, 0, 8));
+    if (name == "grid") {
+      const int width = get("width", 16, 1, 4096), height = get("height", 16, 1, 4096);
+      reserve_procedural_mesh(std::uint64_t(width + 1) * std::uint64_t(height + 1),
+                              2 * std::uint64_t(width) * std::uint64_t(height), where);
+      return make_grid(width, height);
+    }
+    if (name == "icosphere") {
+      const int subdivisions = get("subdivisions", 3, 0, 8);
+      const std::uint64_t faces = std::uint64_t{20} << (2 * subdivisions);
+      reserve_procedural_mesh(faces / 2 + 2, faces, where);
+      return make_icosphere(subdivisions);
+    }
     if (name == "plane") {
       const float repeat =
           value.contains("repeat") ? static_cast<float>(number(value["repeat"], where + ".repeat")) : 1.0f;
       if (!(repeat > 0.0f)) fail(where + ".repeat", "a positive number");
-      return make_plane(get("segments", 1, 1, 4096), repeat);
+      const int segments = get("segments", 1, 1, 4096);
+      reserve_procedural_mesh(std::uint64_t(segments + 1) * std::uint64_t(segments + 1),
+                              2 * std::uint64_t(segments) * std::uint64_t(segments), where);
+      return make_plane(segments, repeat);
     }
     fail(where + ".procedural", "\"grid\", \"icosphere\" or \"plane\", found \"" + excerpt(name) + "\"");
   }
@@ -264,7 +287,7 @@ class SceneReader {
     return source;
   }
 
-  SceneObject object(const json& value, const std::string& where) const {
+  SceneObject object(const json& value, const std::string& where) {
     expect_object(value, where);
     allow_keys(value, where, {"name", "mesh", "uv_projection", "transform", "material"});
     SceneObject result;
@@ -311,6 +334,7 @@ class SceneReader {
 
   std::string file_;
   fs::path folder_;
+  std::uint64_t procedural_mesh_bytes_ = 0;  // summed over the scene by reserve_procedural_mesh()
 };
 
 // Line of byte `offset` in `text` (1-based).

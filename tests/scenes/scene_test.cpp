@@ -84,6 +84,28 @@ TEST(JsonScene, WrongShapesNameTheJsonPath) {
               HasSubstr("background[0]: expected a colour component in 0..1"));
 }
 
+// Each procedural size is bounded, but not their sum over a scene: the generated meshes and
+// textures are counted against the one allocation limit (RASTRACE_MEMORY_LIMIT, 64 MiB here)
+// before anything is generated: 32 bytes a vertex (position, normal, UV), 16 a triangle (indices,
+// material), 4/3 * 4 a texel (RGBA8 and mips). A 900 x 900 grid needs 901^2 * 32 + 2 * 900^2 * 16
+// = 51,897,632 bytes: one fits, two do not.
+TEST(JsonScene, ProceduralMeshesAndTexturesBeyondTheMemoryLimitAreErrorsNamingTheObject) {
+  TempDir dir;
+  ::setenv("RASTRACE_MEMORY_LIMIT", "67108864", 1);
+  const auto scene = [&](const std::string& body) { return error_of(dir.write("big.json", body)); };
+  const std::string grid_900 = R"({"mesh": {"procedural": "grid", "width": 900, "height": 900}})";
+  EXPECT_EQ(scene(R"({"objects": [)" + grid_900 + "]}"), "(no error)");
+  EXPECT_THAT(scene(R"({"objects": [)" + grid_900 + "," + grid_900 + "]}"),
+              HasSubstr("big.json: objects[1].mesh: the scene's procedural meshes: needs 103795264 bytes"));
+  EXPECT_THAT(scene(R"({"objects": [{"mesh": {"procedural": "plane", "segments": 1100}}]})"),
+              HasSubstr("objects[0].mesh: the scene's procedural meshes: needs 77510432 bytes"));
+  EXPECT_EQ(scene(R"({"objects": [{"mesh": {"procedural": "icosphere", "subdivisions": 8}}]})"), "(no error)");
+  const std::string textured = R"({"mesh": {"procedural": "plane"}, "material": {"texture": {"procedural": "checker", "size": 4096}}})";
+  EXPECT_THAT(scene(R"({"objects": [)" + textured + "]}"),
+              HasSubstr("procedural textures: needs 89478485 bytes"));
+  ::unsetenv("RASTRACE_MEMORY_LIMIT");
+}
+
 TEST(JsonScene, RelativePathsResolveBesideTheSceneThenInTheDataFolder) {
   TempDir dir;
   std::filesystem::copy_file(testing::data_file("meshes/triceratops.off"), dir.file("local.off"));
