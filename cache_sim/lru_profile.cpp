@@ -4,6 +4,7 @@
 #include <numeric>
 
 #include "core/error.h"
+#include "core/function_clones.h"
 
 namespace rastrace {
 
@@ -46,13 +47,7 @@ void LruStackProfile::compact() {
   rebuild(next);
 }
 
-// Not with clang (14, the fuzz build, scripts/fuzz.sh, names the dispatching ifunc
-// "access_lines.ifunc": callers of access_lines find no symbol and the link fails), nor under
-// ThreadSanitizer (scripts/tsan.sh: the instrumented resolver runs during relocation, before
-// TSan's runtime is initialised, and crashes).
-#if defined(__x86_64__) && !defined(__clang__) && !defined(__SANITIZE_THREAD__)
-__attribute__((target_clones("popcnt", "default")))
-#endif
+RASTRACE_CLONES("popcnt", "default")
 void LruStackProfile::access_lines(std::span<const std::uint64_t> lines) {
   for (const std::uint64_t line : lines) access(line);
 }

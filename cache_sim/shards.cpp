@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/function_clones.h"
 #include "core/units.h"
 
 namespace rastrace {
@@ -46,7 +47,7 @@ namespace {
 // Hashes every line (a loop without dependences between lines, which the AVX-512 clone runs 8
 // lines at a time with vpmullq), then keeps the sampled ones in place: each line is written and
 // the end advances only past the kept ones, so the rate needs no predicted branch.
-__attribute__((target_clones("arch=x86-64-v4", "default")))
+RASTRACE_CLONES("arch=x86-64-v4", "default")
 std::size_t hash_and_keep(const std::uint64_t* lines, std::size_t n, std::uint64_t threshold, bool all,
                           std::uint64_t* kept, std::uint64_t* hashes) {
   for (std::size_t i = 0; i < n; ++i) hashes[i] = sample_hash(lines[i]);

@@ -6,6 +6,7 @@
 
 #include "core/input_guard.h"
 #include "core/error.h"
+#include "core/function_clones.h"
 
 namespace rastrace {
 
@@ -58,11 +59,7 @@ template <int Groups>
 }
 
 // Every FIFO lane over vertices[0, n). Lane counts up to 64 keep clocks and counters in registers.
-// No clones under ThreadSanitizer (scripts/tsan.sh): the ifunc resolver runs, instrumented, while
-// the dynamic loader relocates the program, before TSan's runtime exists, and crashes.
-#if !defined(__SANITIZE_THREAD__)
-__attribute__((target_clones("avx512f", "avx2", "default")))
-#endif
+RASTRACE_CLONES("avx512f", "avx2", "default")
 void fifo_run(
     const std::uint32_t* vertices, std::size_t n, std::uint32_t* stamps, std::uint32_t lanes, std::uint32_t* clocks,
     const std::uint32_t* sizes, std::uint32_t* misses) {

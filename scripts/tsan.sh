@@ -5,8 +5,11 @@
 # read-ahead (cache_sim/sweep.cpp; ParallelSweep), and the multi-threaded renderer's tile workers
 # (raster/worker_pool.cpp; the RenderIdentity tests at 2 and 4 threads, which also write traces
 # through the writer's thread). Own build in build-tsan/.
-# Only the two test executables and the libraries they link are built: their `/fast` make
-# targets skip the dependency on the rastrace tool, which these tests do not run.
+# Only the three test executables and the libraries they link are built: their `/fast` make
+# targets skip the dependency on the rastrace tool, which these tests do not run. `/fast` also
+# skips the step that merges the compiler's header dependencies, so that step (`depend`) runs
+# first: without it a test object compiled before a header changed is not rebuilt, and the tests
+# fail on stale struct layouts (ReadAhead failed so, 3 December 2026, with no race behind it).
 # Fails on any data race, lock-order inversion or test failure.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -24,7 +27,12 @@ mkdir -p "$dir"
 cmake -S "$here" -B "$dir" "${flags[@]}" >"$dir/configure.log" 2>&1 || { cat "$dir/configure.log" >&2; exit 1; }
 {
   nice cmake --build "$dir" -j"$(nproc)" --target core traces scenes cache_sim raster pipeline reorder &&
-    nice make -C "$dir" -j"$(nproc)" test_traces/fast test_cache_sim/fast test_pipeline/fast
+  (
+    for t in test_traces test_cache_sim test_pipeline; do
+      nice make -C "$dir" -f "tests/CMakeFiles/$t.dir/build.make" "tests/CMakeFiles/$t.dir/depend" &&
+        nice make -C "$dir" -j"$(nproc)" "$t/fast" || exit 1
+    done  # in a subshell: `exit 1` fails the build step, reported below
+  )
 } >"$dir/build.log" 2>&1 || { grep -E 'error|Error' "$dir/build.log" | head -30 >&2; exit 1; }
 echo "tsan: built in $(($(date +%s) - start)) s" >&2
 # halt_on_error: the first report fails the run; second_deadlock_stack: both stacks of an inversion.
