@@ -92,20 +92,31 @@ class StripCover {
   unsigned improve(int depth, unsigned max_passes) {
     unsigned pass = 0;
     reindex_all();
-    radius_ = 2 * depth + 2;
-    dirty_.assign(F_, kDirtyEnd | kDirtySwap);
+    const std::size_t radius = 2 * std::size_t(depth) + 2;
+    mark_radius_ = radius / 2;
+    near_radius_ = radius - mark_radius_;
+    never_searched_.assign(F_, 1u << kEndSearch | 1u << kSwapSearch);
+    reached_at_.assign(F_, 0);
+    for (unsigned kind : {kEndSearch, kSwapSearch}) {
+      searched_at_[kind].assign(F_, 0);
+      failure_[kind].assign(F_, FailureRecord{});
+    }
     for (; pass < max_passes; ++pass) {
       bool improved = false;
       for (std::uint32_t f = 0; f < F_; ++f) {
-        if (deg(f) >= 2 || !(dirty_[f] & kDirtyEnd)) continue;
-        dirty_[f] &= std::uint8_t(~kDirtyEnd);
+        if (deg(f) >= 2 || !search_due(kEndSearch, f)) continue;
+        begin_record();
+        note_strip(path_[f]);
         used_.assign(1, path_[f]);
         origin_ = f;
         undo_mask_.clear();
         undo_partner_.clear();
         if (chain(f, depth, 0)) {
+          end_record(kEndSearch, f, false);
           improved = true;
           reindex_changed();
+        } else {
+          end_record(kEndSearch, f, true);
         }
       }
       improved |= break_swaps(depth);
@@ -119,8 +130,10 @@ class StripCover {
   bool break_swaps(int depth) {
     bool improved = false;
     for (std::uint32_t g = 0; g < F_; ++g) {
-      if (!(dirty_[g] & kDirtySwap)) continue;
-      dirty_[g] &= std::uint8_t(~kDirtySwap);
+      if (!search_due(kSwapSearch, g)) continue;
+      begin_record();
+      note_strip(path_[g]);  // which of g's links are swaps
+      bool found = false;
       for (unsigned s = 0; s < 3; ++s) {
         if (!(mask_[g] >> s & 1) || !fan(g, s)) continue;
         const std::uint32_t h = topology_.neighbor(g, s);
@@ -140,11 +153,15 @@ class StripCover {
         used_.assign(1, P);
         origin_ = kNoFace;
         if (chain(g, depth, acc) || (undo_to(mm, mp), chain(h, depth, acc))) {
-          improved = true;
-          reindex_changed();
+          found = true;
           break;
         }
         undo_to(0, 0);
+      }
+      end_record(kSwapSearch, g, !found);
+      if (found) {
+        improved = true;
+        reindex_changed();
       }
     }
     return improved;
@@ -280,6 +297,7 @@ class StripCover {
       const unsigned s = k % 3;
       if (mask_[t] >> s & 1 || !linkable(t, s)) continue;
       const std::uint32_t m = topology_.neighbor(t, s);
+      note_strip(path_[m]);
       const std::uint32_t pt = partner_[t];
       if ((deg(m) < 2) != (k < 3)) continue;
       if (deg(m) < 2) {
@@ -337,12 +355,16 @@ class StripCover {
 
   static constexpr int kSlack = 2;  // a join at the end of a chain saves 2, or 3 with a start swap
 
-  // Strip ids and positions, from each strip's head.
+  // Strip ids and positions, from each strip's head. A re-walked strip gets a new id, and the
+  // ids its faces had are no longer current (see FailureRecord).
   void index_from(std::uint32_t head) {
     const std::uint32_t id = std::uint32_t(head_.size());
     head_.push_back(head);
+    strip_current_.push_back(1);
+    noted_.push_back(0);
     std::uint32_t prev = kNoFace, at = head, i = 0;
     for (;;) {
+      strip_current_[path_[at]] = 0;
       path_[at] = id;
       pos_[at] = i++;
       const std::uint32_t next = step(at, prev);
@@ -355,43 +377,149 @@ class StripCover {
   void reindex_all() {
     head_.clear();
     tail_.clear();
+    strip_current_.clear();
+    noted_.clear();
     for (std::uint32_t f = 0; f < F_; ++f)
       if (deg(f) < 2 && partner_[f] >= f) index_from(f);
+    strip_current_.assign(head_.size(), 1);
   }
+  // After an applied change: re-walks the strips it touched, and marks the faces within
+  // mark_radius_ of those whose links changed (see search_due).
   void reindex_changed() {
     stamp_.resize(F_, 0);
-    seen_.resize(F_, 0);
     ++epoch_;
+    ++changes_;
     for (const auto& [f, old] : undo_mask_) {
       const std::uint32_t end = walk_to_end(f);
       if (stamp_[end] == epoch_) continue;
       stamp_[end] = stamp_[partner_[end]] = epoch_;
       index_from(end);
     }
-    // Chains starting near the change may now find something: a chain reaches about two faces
-    // per step from its start.
+    seen_.resize(F_, 0);
+    ++epoch_;
     queue_.clear();
     for (const auto& [f, old] : undo_mask_)
       if (seen_[f] != epoch_) {
         seen_[f] = epoch_;
+        reached_at_[f] = changes_;
         queue_.push_back(f);
       }
+    ball(mark_radius_, [&](std::uint32_t g) {
+      reached_at_[g] = changes_;
+      return false;
+    });
+    undo_mask_.clear();
+    undo_partner_.clear();
+  }
+
+  // Which searches run. The rule: a search from f (a chain from a strip end, or breaking f's
+  // swaps) is due again when some face within 2 * depth + 2 of f changed its links since f's
+  // last search (chains starting near a change may now find something: a chain reaches about
+  // two faces per step from its start). Marking that whole ball at every change costs most of
+  // the mesh per change when the dual graph is an expander, so the distance is split: a change
+  // marks its ball of radius mark_radius_ (reached_at_), and a search is due when a marked face
+  // lies within near_radius_ of it, the two radii adding up to the rule's.
+  // A due search is skipped when its last failure record still holds: it would fail again, so
+  // skipping it leaves every decision, hence every strip, as it was.
+  bool search_due(unsigned kind, std::uint32_t f) {
+    const std::uint8_t bit = std::uint8_t(1u << kind);
+    if (never_searched_[f] & bit) {
+      never_searched_[f] &= std::uint8_t(~bit);
+      searched_at_[kind][f] = changes_;
+      return true;
+    }
+    if (fails_again(failure_[kind][f])) {
+      searched_at_[kind][f] = changes_;  // as if searched: it would have failed
+      return false;
+    }
+    if (!changed_near(f, searched_at_[kind][f])) return false;
+    searched_at_[kind][f] = changes_;
+    return true;
+  }
+  // Whether a face within near_radius_ of f (f included) was marked by a change after change
+  // number `since`.
+  bool changed_near(std::uint32_t f, std::uint32_t since) {
+    if (changes_ == since) return false;
+    if (reached_at_[f] > since) return true;
+    seen_.resize(F_, 0);
+    ++epoch_;
+    seen_[f] = epoch_;
+    queue_.assign(1, f);
+    return ball(near_radius_, [&](std::uint32_t g) { return reached_at_[g] > since; });
+  }
+  // Breadth-first from the faces in queue_ (seen_ == epoch_), calling visit(g) on each face first
+  // reached within `radius` steps; stops early, returning true, when visit does.
+  template <typename Visit>
+  bool ball(std::size_t radius, Visit&& visit) {
+    const std::uint32_t* neighbors = topology_.face_neighbors.data();
+    std::uint32_t* seen = seen_.data();
+    const std::uint32_t epoch = epoch_;
     for (std::size_t head = 0, level_end = queue_.size(), level = 0; head < queue_.size(); ++head) {
       if (head == level_end) {
-        if (++level > radius_) break;
+        ++level;
         level_end = queue_.size();
       }
-      const std::uint32_t f = queue_[head];
-      dirty_[f] = kDirtyEnd | kDirtySwap;
+      if (level == radius) break;  // the last level is visited, not expanded
+      const std::uint32_t* n = neighbors + 3 * std::size_t(queue_[head]);
       for (unsigned s = 0; s < 3; ++s) {
-        const std::uint32_t g = topology_.neighbor(f, s);
-        if (g == kNoFace || seen_[g] == epoch_) continue;
-        seen_[g] = epoch_;
+        const std::uint32_t g = n[s];
+        if (g == kNoFace || seen[g] == epoch) continue;
+        seen[g] = epoch;
+        if (visit(g)) return true;
         queue_.push_back(g);
       }
     }
-    undo_mask_.clear();
-    undo_partner_.clear();
+    return false;
+  }
+
+  // A failed search's record: the strips whose faces it read (their links, ends, ids and
+  // positions). A chain reads t's strip and, for every neighbour m it tries, m's strip; every
+  // other face it reads is linked to one of those (links_cost, pen, partners, head_/tail_, pos_).
+  // A strip whose faces keep their links keeps its ends and is not re-walked, so while every
+  // recorded strip is current the search reads the same values and fails again. (An applied
+  // change re-walks every strip containing a face whose links changed, and each piece of a
+  // changed strip contains such a face.)
+  struct FailureRecord {
+    std::uint32_t begin = kNoFace, end = 0;  // range in recorded_strips_; begin kNoFace: none
+  };
+  void begin_record() {
+    ++note_epoch_;
+    record_begin_ = recorded_strips_.size();
+  }
+  void note_strip(std::uint32_t strip) {
+    if (noted_[strip] == note_epoch_) return;
+    noted_[strip] = note_epoch_;
+    recorded_strips_.push_back(strip);
+  }
+  void end_record(unsigned kind, std::uint32_t f, bool failed) {
+    FailureRecord& record = failure_[kind][f];
+    if (record.begin != kNoFace) recorded_live_ -= record.end - record.begin;
+    record = FailureRecord{};
+    if (failed) {
+      record = {std::uint32_t(record_begin_), std::uint32_t(recorded_strips_.size())};
+      recorded_live_ += record.end - record.begin;
+    } else {
+      recorded_strips_.resize(record_begin_);
+    }
+    if (recorded_strips_.size() > 2 * recorded_live_ + 4096) compact_records();
+  }
+  bool fails_again(const FailureRecord& record) const {
+    if (record.begin == kNoFace) return false;
+    for (std::uint32_t i = record.begin; i < record.end; ++i)
+      if (!strip_current_[recorded_strips_[i]]) return false;
+    return true;
+  }
+  void compact_records() {
+    std::vector<std::uint32_t> kept;
+    kept.reserve(2 * recorded_live_);
+    for (std::vector<FailureRecord>& records : failure_)
+      for (FailureRecord& record : records) {
+        if (record.begin == kNoFace) continue;
+        const std::uint32_t begin = std::uint32_t(kept.size());
+        kept.insert(kept.end(), recorded_strips_.begin() + record.begin, recorded_strips_.begin() + record.end);
+        record = {begin, std::uint32_t(kept.size())};
+      }
+    recorded_strips_.swap(kept);
   }
 
   const std::uint32_t* idx_;
@@ -402,10 +530,21 @@ class StripCover {
   std::vector<std::uint32_t> partner_;                   // for a strip end: the other end (itself when alone)
   std::vector<std::uint32_t> path_, pos_, head_, tail_;  // strip ids and positions (see chain)
   std::vector<std::uint32_t> stamp_, seen_, queue_;
-  static constexpr std::uint8_t kDirtyEnd = 1, kDirtySwap = 2;  // what to retry at a face
-  std::vector<std::uint8_t> dirty_;
-  std::size_t radius_ = 0;
+  std::size_t mark_radius_ = 0, near_radius_ = 0;  // see search_due
   std::uint32_t epoch_ = 0;
+  // Searches (see search_due): kinds, and per kind and face the change count at the last search
+  // and the last failure's record.
+  static constexpr unsigned kEndSearch = 0, kSwapSearch = 1;
+  std::vector<std::uint8_t> never_searched_;     // a bit per kind
+  std::vector<std::uint32_t> searched_at_[2];    // changes_ at the last search
+  std::vector<FailureRecord> failure_[2];
+  std::vector<std::uint32_t> reached_at_;        // per face: the last change within mark_radius_
+  std::uint32_t changes_ = 0;                    // applied changes so far
+  std::vector<std::uint8_t> strip_current_;      // per strip id: not re-walked since
+  std::vector<std::uint32_t> noted_;             // per strip id: note_epoch_ when last recorded
+  std::vector<std::uint32_t> recorded_strips_;   // the records' strip ids
+  std::size_t record_begin_ = 0, recorded_live_ = 0;
+  std::uint32_t note_epoch_ = 0;
   std::vector<std::pair<std::uint32_t, std::uint8_t>> undo_mask_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> undo_partner_;
   std::vector<std::uint32_t> used_;
