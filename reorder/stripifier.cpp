@@ -292,18 +292,23 @@ class StripCover {
   // first step.
   bool chain(std::uint32_t t, int depth, int acc) {
     const std::size_t mark_mask = undo_mask_.size(), mark_partner = undo_partner_.size();
+    const std::uint32_t pt = partner_[t];
+    const int t_term = int(path_term(t, pt));  // t's strip before this step (restored after each try)
+    // A tunnel's strips cost at least 2 each afterwards (path_term), its links at least 0: when
+    // even that cannot make the total negative, or keep it within kSlack to go on, the tunnel
+    // is not tried.
+    const int give_up = depth > 1 ? kSlack : -1;
     // Joins first (they end the chain), then tunnels.
     for (unsigned k = 0; k < 6; ++k) {
       const unsigned s = k % 3;
       if (mask_[t] >> s & 1 || !linkable(t, s)) continue;
       const std::uint32_t m = topology_.neighbor(t, s);
       note_strip(path_[m]);
-      const std::uint32_t pt = partner_[t];
       if ((deg(m) < 2) != (k < 3)) continue;
       if (deg(m) < 2) {
         if (m == pt) continue;
         const std::uint32_t pm = partner_[m];
-        const int before = int(links_cost({t, m}) + path_term(t, pt) + path_term(m, pm));
+        const int before = int(links_cost({t, m})) + t_term + int(path_term(m, pm));
         link(t, m);
         set_partner(pt, pm);
         set_partner(pm, pt);
@@ -315,6 +320,7 @@ class StripCover {
       const std::uint32_t P = path_[m];
       const bool own = t == origin_ && P == path_[t];
       if (!own && std::find(used_.begin(), used_.end(), P) != used_.end()) continue;
+      const int p_term = own ? 0 : int(path_term(head_[P], tail_[P]));
       for (unsigned r = 0; r < 3; ++r) {
         if (!(mask_[m] >> r & 1)) continue;
         const std::uint32_t a = topology_.neighbor(m, r);
@@ -323,7 +329,8 @@ class StripCover {
         if (own) {
           // Reflection: m must drop the link towards t (t is the head or the tail of the strip).
           if (a_before != (t == head_[P])) continue;
-          before = int(links_cost({t, m, a}) + path_term(t, pt));
+          before = int(links_cost({t, m, a})) + t_term;
+          if (acc + 2 - before > give_up) continue;
           link(t, m);
           unlink(m, a);
           set_partner(a, pt);
@@ -331,7 +338,8 @@ class StripCover {
           after = int(links_cost({t, m, a}) + path_term(a, pt));
         } else {
           const std::uint32_t ea = a_before ? head_[P] : tail_[P], eb = a_before ? tail_[P] : head_[P];
-          before = int(links_cost({t, m, a}) + path_term(t, pt) + path_term(head_[P], tail_[P]));
+          before = int(links_cost({t, m, a})) + t_term + p_term;
+          if (acc + 4 - before > give_up) continue;
           link(t, m);
           unlink(m, a);
           set_partner(pt, eb);
@@ -595,9 +603,13 @@ Ordering reorder_strip(const Mesh& mesh, const ReorderParams& /*params*/) {
   auto live_neighbors = [&](std::uint32_t g) {
     return int(live(topology.neighbor(g, 0))) + int(live(topology.neighbor(g, 1))) + int(live(topology.neighbor(g, 2)));
   };
+
   enum class Mode { FewestNeighbors, AvoidSwaps };
-  // Returns the number of swaps; the faces go to `strip`.
-  auto grow = [&](std::uint32_t f, unsigned first_exit, Mode mode, std::vector<std::uint32_t>& strip) {
+  // Returns the number of swaps; the faces go to `strip`. modes_agree: whether the other mode
+  // would have made the same choice at every step (then it grows the same strip).
+  auto grow = [&](std::uint32_t f, unsigned first_exit, Mode mode, std::vector<std::uint32_t>& strip,
+                  bool& modes_agree) {
+    modes_agree = true;
     ++stamp;
     strip.clear();
     std::uint64_t swaps = 0;
@@ -614,8 +626,11 @@ Ordering reorder_strip(const Mesh& mesh, const ReorderParams& /*params*/) {
         const std::uint32_t a = v[s], b = v[(s + 1) % 3];
         return !((a == w && b == nv) || (a == nv && b == w));
       };
-      int best = -1;
-      int best_key[3] = {0, 0, 0};
+      int best = -1, best_other = -1;
+      int best_key[3] = {0, 0, 0}, best_other_key[3] = {0, 0, 0};
+      auto less = [](const int* a, const int* b) {
+        return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]) || (a[0] == b[0] && a[1] == b[1] && a[2] < b[2]);
+      };
       for (unsigned s = 0; s < 3; ++s) {
         const std::uint32_t g = topology.neighbor(f, s);
         if (!live(g) || degenerate(idx + 3 * std::size_t(g))) continue;
@@ -629,18 +644,19 @@ Ordering reorder_strip(const Mesh& mesh, const ReorderParams& /*params*/) {
         }
         const int fewest = live_neighbors(g);
         const int swap = is_swap(s) ? 1 : 0;
-        int key[3] = {fewest, next_min, swap};
-        if (mode == Mode::AvoidSwaps) {
-          key[0] = swap;
-          key[1] = fewest;
-          key[2] = next_min;
-        }
-        if (best < 0 || key[0] < best_key[0] || (key[0] == best_key[0] && key[1] < best_key[1]) ||
-            (key[0] == best_key[0] && key[1] == best_key[1] && key[2] < best_key[2])) {
+        const int fewest_key[3] = {fewest, next_min, swap}, avoid_key[3] = {swap, fewest, next_min};
+        const int* key = mode == Mode::AvoidSwaps ? avoid_key : fewest_key;
+        const int* other_key = mode == Mode::AvoidSwaps ? fewest_key : avoid_key;
+        if (best < 0 || less(key, best_key)) {
           best = static_cast<int>(s);
           for (int k = 0; k < 3; ++k) best_key[k] = key[k];
         }
+        if (best_other < 0 || less(other_key, best_other_key)) {
+          best_other = static_cast<int>(s);
+          for (int k = 0; k < 3; ++k) best_other_key[k] = other_key[k];
+        }
       }
+      modes_agree &= best == best_other;
       if (best < 0) break;
       const std::uint32_t a = v[best], b = v[(best + 1) % 3];
       if (first) {
@@ -683,10 +699,16 @@ Ordering reorder_strip(const Mesh& mesh, const ReorderParams& /*params*/) {
     // leaves isolated (each will be a 3-vertex strip of its own).
     double best_cost = 0.0;
     best_strip.clear();
-    for (const std::uint32_t f : starts)
+    for (const std::uint32_t f : starts) {
+      bool same_in_both_modes[3] = {false, false, false};
       for (Mode mode : {Mode::FewestNeighbors, Mode::AvoidSwaps})
         for (unsigned exit = 0; exit < 3; ++exit) {
-          const std::uint64_t swaps = grow(f, exit, mode, candidate);
+          // The second mode's strip is then the first's, already weighed: an equal cost never
+          // replaces the best, so it cannot change the choice.
+          if (mode == Mode::AvoidSwaps && same_in_both_modes[exit]) continue;
+          bool agree = false;
+          const std::uint64_t swaps = grow(f, exit, mode, candidate, agree);
+          if (mode == Mode::FewestNeighbors) same_in_both_modes[exit] = agree;
           std::uint64_t isolated = 0;
           for (const std::uint32_t h : candidate)
             for (unsigned t = 0; t < 3; ++t) {
@@ -701,6 +723,7 @@ Ordering reorder_strip(const Mesh& mesh, const ReorderParams& /*params*/) {
             best_strip.swap(candidate);
           }
         }
+    }
     for (const std::uint32_t g : best_strip) visit(g);
     cover.add_strip(best_strip);
     built.insert(built.end(), best_strip.begin(), best_strip.end());
