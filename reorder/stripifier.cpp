@@ -631,10 +631,19 @@ Ordering reorder_strip(const Mesh& mesh, const ReorderParams& /*params*/) {
       auto less = [](const int* a, const int* b) {
         return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]) || (a[0] == b[0] && a[1] == b[1] && a[2] < b[2]);
       };
+      // The faces the strip can go on to; the keys only rank two or more (one is taken as it is,
+      // in either mode).
+      unsigned options[3], option_count = 0;
       for (unsigned s = 0; s < 3; ++s) {
         const std::uint32_t g = topology.neighbor(f, s);
         if (!live(g) || degenerate(idx + 3 * std::size_t(g))) continue;
         if (first && s != first_exit) continue;
+        options[option_count++] = s;
+      }
+      if (option_count == 1) best = best_other = static_cast<int>(options[0]);
+      for (unsigned o = 0; o < option_count && option_count > 1; ++o) {
+        const unsigned s = options[o];
+        const std::uint32_t g = topology.neighbor(f, s);
         int next_min = -1;  // no live neighbour at all is best: the strip ends cleanly there
         for (unsigned t = 0; t < 3; ++t) {
           const std::uint32_t h = topology.neighbor(g, t);
