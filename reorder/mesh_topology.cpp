@@ -103,15 +103,33 @@ MeshTopology build_mesh_topology(const Mesh& mesh) {
         forward[k] = a < b;
       }
   }
+  std::vector<std::uint64_t> sorted;
+  std::vector<std::uint32_t> upper_counts;
   for (std::uint32_t v = 0; v < V; ++v) {
     std::uint64_t* key = keys.data() + bucket_offsets[v];
     std::uint8_t* fwd = forward.data() + bucket_offsets[v];
     const std::uint32_t n = bucket_offsets[v + 1] - bucket_offsets[v];
     if (n > kInsertionSortMax) {
-      // A vertex in thousands of faces (a fan): insertion sort would be quadratic. The keys are
-      // distinct (the slot is in them), so any sort gives the same order; the direction bytes
-      // are read again from the indices afterwards, once per entry.
-      std::sort(key, key + n);
+      // A vertex in thousands of faces (a fan, or a mesh on few vertices): insertion sort would be
+      // quadratic. The keys are distinct (the slot is in them), so any sort gives the same order;
+      // the direction bytes are read again from the indices afterwards, once per entry. The
+      // bucket is filled in slot order, so a stable counting sort by upper vertex gives it when
+      // the upper vertices span a range of the bucket's order of size; std::sort otherwise.
+      std::uint32_t lo = 0xFFFFFFFFu, hi = 0;
+      for (std::uint32_t i = 0; i < n; ++i) {
+        lo = std::min(lo, static_cast<std::uint32_t>(key[i] >> 32));
+        hi = std::max(hi, static_cast<std::uint32_t>(key[i] >> 32));
+      }
+      if (std::uint64_t(hi - lo) < 4 * std::uint64_t(n)) {
+        upper_counts.assign(std::size_t(hi - lo) + 2, 0);
+        for (std::uint32_t i = 0; i < n; ++i) ++upper_counts[static_cast<std::uint32_t>(key[i] >> 32) - lo + 1];
+        for (std::size_t u = 1; u < upper_counts.size(); ++u) upper_counts[u] += upper_counts[u - 1];
+        sorted.resize(n);
+        for (std::uint32_t i = 0; i < n; ++i) sorted[upper_counts[static_cast<std::uint32_t>(key[i] >> 32) - lo]++] = key[i];
+        std::copy(sorted.begin(), sorted.end(), key);
+      } else {
+        std::sort(key, key + n);
+      }
       for (std::uint32_t i = 0; i < n; ++i) {
         const std::size_t s = static_cast<std::uint32_t>(key[i]);
         fwd[i] = idx[s] < idx[s % 3 == 2 ? s - 2 : s + 1];

@@ -92,20 +92,31 @@ class StripCover {
   unsigned improve(int depth, unsigned max_passes) {
     unsigned pass = 0;
     reindex_all();
-    radius_ = 2 * depth + 2;
-    dirty_.assign(F_, kDirtyEnd | kDirtySwap);
+    const std::size_t radius = 2 * std::size_t(depth) + 2;
+    mark_radius_ = radius / 2;
+    near_radius_ = radius - mark_radius_;
+    never_searched_.assign(F_, 1u << kEndSearch | 1u << kSwapSearch);
+    reached_at_.assign(F_, 0);
+    for (unsigned kind : {kEndSearch, kSwapSearch}) {
+      searched_at_[kind].assign(F_, 0);
+      failure_[kind].assign(F_, FailureRecord{});
+    }
     for (; pass < max_passes; ++pass) {
       bool improved = false;
       for (std::uint32_t f = 0; f < F_; ++f) {
-        if (deg(f) >= 2 || !(dirty_[f] & kDirtyEnd)) continue;
-        dirty_[f] &= std::uint8_t(~kDirtyEnd);
+        if (deg(f) >= 2 || !search_due(kEndSearch, f)) continue;
+        begin_record();
+        note_strip(path_[f]);
         used_.assign(1, path_[f]);
         origin_ = f;
         undo_mask_.clear();
         undo_partner_.clear();
         if (chain(f, depth, 0)) {
+          end_record(kEndSearch, f, false);
           improved = true;
           reindex_changed();
+        } else {
+          end_record(kEndSearch, f, true);
         }
       }
       improved |= break_swaps(depth);
@@ -119,8 +130,10 @@ class StripCover {
   bool break_swaps(int depth) {
     bool improved = false;
     for (std::uint32_t g = 0; g < F_; ++g) {
-      if (!(dirty_[g] & kDirtySwap)) continue;
-      dirty_[g] &= std::uint8_t(~kDirtySwap);
+      if (!search_due(kSwapSearch, g)) continue;
+      begin_record();
+      note_strip(path_[g]);  // which of g's links are swaps
+      bool found = false;
       for (unsigned s = 0; s < 3; ++s) {
         if (!(mask_[g] >> s & 1) || !fan(g, s)) continue;
         const std::uint32_t h = topology_.neighbor(g, s);
@@ -140,11 +153,15 @@ class StripCover {
         used_.assign(1, P);
         origin_ = kNoFace;
         if (chain(g, depth, acc) || (undo_to(mm, mp), chain(h, depth, acc))) {
-          improved = true;
-          reindex_changed();
+          found = true;
           break;
         }
         undo_to(0, 0);
+      }
+      end_record(kSwapSearch, g, !found);
+      if (found) {
+        improved = true;
+        reindex_changed();
       }
     }
     return improved;
@@ -275,17 +292,23 @@ class StripCover {
   // first step.
   bool chain(std::uint32_t t, int depth, int acc) {
     const std::size_t mark_mask = undo_mask_.size(), mark_partner = undo_partner_.size();
+    const std::uint32_t pt = partner_[t];
+    const int t_term = int(path_term(t, pt));  // t's strip before this step (restored after each try)
+    // A tunnel's strips cost at least 2 each afterwards (path_term), its links at least 0: when
+    // even that cannot make the total negative, or keep it within kSlack to go on, the tunnel
+    // is not tried.
+    const int give_up = depth > 1 ? kSlack : -1;
     // Joins first (they end the chain), then tunnels.
     for (unsigned k = 0; k < 6; ++k) {
       const unsigned s = k % 3;
       if (mask_[t] >> s & 1 || !linkable(t, s)) continue;
       const std::uint32_t m = topology_.neighbor(t, s);
-      const std::uint32_t pt = partner_[t];
+      note_strip(path_[m]);
       if ((deg(m) < 2) != (k < 3)) continue;
       if (deg(m) < 2) {
         if (m == pt) continue;
         const std::uint32_t pm = partner_[m];
-        const int before = int(links_cost({t, m}) + path_term(t, pt) + path_term(m, pm));
+        const int before = int(links_cost({t, m})) + t_term + int(path_term(m, pm));
         link(t, m);
         set_partner(pt, pm);
         set_partner(pm, pt);
@@ -297,6 +320,7 @@ class StripCover {
       const std::uint32_t P = path_[m];
       const bool own = t == origin_ && P == path_[t];
       if (!own && std::find(used_.begin(), used_.end(), P) != used_.end()) continue;
+      const int p_term = own ? 0 : int(path_term(head_[P], tail_[P]));
       for (unsigned r = 0; r < 3; ++r) {
         if (!(mask_[m] >> r & 1)) continue;
         const std::uint32_t a = topology_.neighbor(m, r);
@@ -305,7 +329,8 @@ class StripCover {
         if (own) {
           // Reflection: m must drop the link towards t (t is the head or the tail of the strip).
           if (a_before != (t == head_[P])) continue;
-          before = int(links_cost({t, m, a}) + path_term(t, pt));
+          before = int(links_cost({t, m, a})) + t_term;
+          if (acc + 2 - before > give_up) continue;
           link(t, m);
           unlink(m, a);
           set_partner(a, pt);
@@ -313,7 +338,8 @@ class StripCover {
           after = int(links_cost({t, m, a}) + path_term(a, pt));
         } else {
           const std::uint32_t ea = a_before ? head_[P] : tail_[P], eb = a_before ? tail_[P] : head_[P];
-          before = int(links_cost({t, m, a}) + path_term(t, pt) + path_term(head_[P], tail_[P]));
+          before = int(links_cost({t, m, a})) + t_term + p_term;
+          if (acc + 4 - before > give_up) continue;
           link(t, m);
           unlink(m, a);
           set_partner(pt, eb);
@@ -337,12 +363,16 @@ class StripCover {
 
   static constexpr int kSlack = 2;  // a join at the end of a chain saves 2, or 3 with a start swap
 
-  // Strip ids and positions, from each strip's head.
+  // Strip ids and positions, from each strip's head. A re-walked strip gets a new id, and the
+  // ids its faces had are no longer current (see FailureRecord).
   void index_from(std::uint32_t head) {
     const std::uint32_t id = std::uint32_t(head_.size());
     head_.push_back(head);
+    strip_current_.push_back(1);
+    noted_.push_back(0);
     std::uint32_t prev = kNoFace, at = head, i = 0;
     for (;;) {
+      strip_current_[path_[at]] = 0;
       path_[at] = id;
       pos_[at] = i++;
       const std::uint32_t next = step(at, prev);
@@ -355,43 +385,149 @@ class StripCover {
   void reindex_all() {
     head_.clear();
     tail_.clear();
+    strip_current_.clear();
+    noted_.clear();
     for (std::uint32_t f = 0; f < F_; ++f)
       if (deg(f) < 2 && partner_[f] >= f) index_from(f);
+    strip_current_.assign(head_.size(), 1);
   }
+  // After an applied change: re-walks the strips it touched, and marks the faces within
+  // mark_radius_ of those whose links changed (see search_due).
   void reindex_changed() {
     stamp_.resize(F_, 0);
-    seen_.resize(F_, 0);
     ++epoch_;
+    ++changes_;
     for (const auto& [f, old] : undo_mask_) {
       const std::uint32_t end = walk_to_end(f);
       if (stamp_[end] == epoch_) continue;
       stamp_[end] = stamp_[partner_[end]] = epoch_;
       index_from(end);
     }
-    // Chains starting near the change may now find something: a chain reaches about two faces
-    // per step from its start.
+    seen_.resize(F_, 0);
+    ++epoch_;
     queue_.clear();
     for (const auto& [f, old] : undo_mask_)
       if (seen_[f] != epoch_) {
         seen_[f] = epoch_;
+        reached_at_[f] = changes_;
         queue_.push_back(f);
       }
+    ball(mark_radius_, [&](std::uint32_t g) {
+      reached_at_[g] = changes_;
+      return false;
+    });
+    undo_mask_.clear();
+    undo_partner_.clear();
+  }
+
+  // Which searches run. The rule: a search from f (a chain from a strip end, or breaking f's
+  // swaps) is due again when some face within 2 * depth + 2 of f changed its links since f's
+  // last search (chains starting near a change may now find something: a chain reaches about
+  // two faces per step from its start). Marking that whole ball at every change costs most of
+  // the mesh per change when the dual graph is an expander, so the distance is split: a change
+  // marks its ball of radius mark_radius_ (reached_at_), and a search is due when a marked face
+  // lies within near_radius_ of it, the two radii adding up to the rule's.
+  // A due search is skipped when its last failure record still holds: it would fail again, so
+  // skipping it leaves every decision, hence every strip, as it was.
+  bool search_due(unsigned kind, std::uint32_t f) {
+    const std::uint8_t bit = std::uint8_t(1u << kind);
+    if (never_searched_[f] & bit) {
+      never_searched_[f] &= std::uint8_t(~bit);
+      searched_at_[kind][f] = changes_;
+      return true;
+    }
+    if (fails_again(failure_[kind][f])) {
+      searched_at_[kind][f] = changes_;  // as if searched: it would have failed
+      return false;
+    }
+    if (!changed_near(f, searched_at_[kind][f])) return false;
+    searched_at_[kind][f] = changes_;
+    return true;
+  }
+  // Whether a face within near_radius_ of f (f included) was marked by a change after change
+  // number `since`.
+  bool changed_near(std::uint32_t f, std::uint32_t since) {
+    if (changes_ == since) return false;
+    if (reached_at_[f] > since) return true;
+    seen_.resize(F_, 0);
+    ++epoch_;
+    seen_[f] = epoch_;
+    queue_.assign(1, f);
+    return ball(near_radius_, [&](std::uint32_t g) { return reached_at_[g] > since; });
+  }
+  // Breadth-first from the faces in queue_ (seen_ == epoch_), calling visit(g) on each face first
+  // reached within `radius` steps; stops early, returning true, when visit does.
+  template <typename Visit>
+  bool ball(std::size_t radius, Visit&& visit) {
+    const std::uint32_t* neighbors = topology_.face_neighbors.data();
+    std::uint32_t* seen = seen_.data();
+    const std::uint32_t epoch = epoch_;
     for (std::size_t head = 0, level_end = queue_.size(), level = 0; head < queue_.size(); ++head) {
       if (head == level_end) {
-        if (++level > radius_) break;
+        ++level;
         level_end = queue_.size();
       }
-      const std::uint32_t f = queue_[head];
-      dirty_[f] = kDirtyEnd | kDirtySwap;
+      if (level == radius) break;  // the last level is visited, not expanded
+      const std::uint32_t* n = neighbors + 3 * std::size_t(queue_[head]);
       for (unsigned s = 0; s < 3; ++s) {
-        const std::uint32_t g = topology_.neighbor(f, s);
-        if (g == kNoFace || seen_[g] == epoch_) continue;
-        seen_[g] = epoch_;
+        const std::uint32_t g = n[s];
+        if (g == kNoFace || seen[g] == epoch) continue;
+        seen[g] = epoch;
+        if (visit(g)) return true;
         queue_.push_back(g);
       }
     }
-    undo_mask_.clear();
-    undo_partner_.clear();
+    return false;
+  }
+
+  // A failed search's record: the strips whose faces it read (their links, ends, ids and
+  // positions). A chain reads t's strip and, for every neighbour m it tries, m's strip; every
+  // other face it reads is linked to one of those (links_cost, pen, partners, head_/tail_, pos_).
+  // A strip whose faces keep their links keeps its ends and is not re-walked, so while every
+  // recorded strip is current the search reads the same values and fails again. (An applied
+  // change re-walks every strip containing a face whose links changed, and each piece of a
+  // changed strip contains such a face.)
+  struct FailureRecord {
+    std::uint32_t begin = kNoFace, end = 0;  // range in recorded_strips_; begin kNoFace: none
+  };
+  void begin_record() {
+    ++note_epoch_;
+    record_begin_ = recorded_strips_.size();
+  }
+  void note_strip(std::uint32_t strip) {
+    if (noted_[strip] == note_epoch_) return;
+    noted_[strip] = note_epoch_;
+    recorded_strips_.push_back(strip);
+  }
+  void end_record(unsigned kind, std::uint32_t f, bool failed) {
+    FailureRecord& record = failure_[kind][f];
+    if (record.begin != kNoFace) recorded_live_ -= record.end - record.begin;
+    record = FailureRecord{};
+    if (failed) {
+      record = {std::uint32_t(record_begin_), std::uint32_t(recorded_strips_.size())};
+      recorded_live_ += record.end - record.begin;
+    } else {
+      recorded_strips_.resize(record_begin_);
+    }
+    if (recorded_strips_.size() > 2 * recorded_live_ + 4096) compact_records();
+  }
+  bool fails_again(const FailureRecord& record) const {
+    if (record.begin == kNoFace) return false;
+    for (std::uint32_t i = record.begin; i < record.end; ++i)
+      if (!strip_current_[recorded_strips_[i]]) return false;
+    return true;
+  }
+  void compact_records() {
+    std::vector<std::uint32_t> kept;
+    kept.reserve(2 * recorded_live_);
+    for (std::vector<FailureRecord>& records : failure_)
+      for (FailureRecord& record : records) {
+        if (record.begin == kNoFace) continue;
+        const std::uint32_t begin = std::uint32_t(kept.size());
+        kept.insert(kept.end(), recorded_strips_.begin() + record.begin, recorded_strips_.begin() + record.end);
+        record = {begin, std::uint32_t(kept.size())};
+      }
+    recorded_strips_.swap(kept);
   }
 
   const std::uint32_t* idx_;
@@ -402,10 +538,21 @@ class StripCover {
   std::vector<std::uint32_t> partner_;                   // for a strip end: the other end (itself when alone)
   std::vector<std::uint32_t> path_, pos_, head_, tail_;  // strip ids and positions (see chain)
   std::vector<std::uint32_t> stamp_, seen_, queue_;
-  static constexpr std::uint8_t kDirtyEnd = 1, kDirtySwap = 2;  // what to retry at a face
-  std::vector<std::uint8_t> dirty_;
-  std::size_t radius_ = 0;
+  std::size_t mark_radius_ = 0, near_radius_ = 0;  // see search_due
   std::uint32_t epoch_ = 0;
+  // Searches (see search_due): kinds, and per kind and face the change count at the last search
+  // and the last failure's record.
+  static constexpr unsigned kEndSearch = 0, kSwapSearch = 1;
+  std::vector<std::uint8_t> never_searched_;     // a bit per kind
+  std::vector<std::uint32_t> searched_at_[2];    // changes_ at the last search
+  std::vector<FailureRecord> failure_[2];
+  std::vector<std::uint32_t> reached_at_;        // per face: the last change within mark_radius_
+  std::uint32_t changes_ = 0;                    // applied changes so far
+  std::vector<std::uint8_t> strip_current_;      // per strip id: not re-walked since
+  std::vector<std::uint32_t> noted_;             // per strip id: note_epoch_ when last recorded
+  std::vector<std::uint32_t> recorded_strips_;   // the records' strip ids
+  std::size_t record_begin_ = 0, recorded_live_ = 0;
+  std::uint32_t note_epoch_ = 0;
   std::vector<std::pair<std::uint32_t, std::uint8_t>> undo_mask_;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> undo_partner_;
   std::vector<std::uint32_t> used_;
@@ -456,9 +603,13 @@ Ordering reorder_strip(const Mesh& mesh, const ReorderParams& /*params*/) {
   auto live_neighbors = [&](std::uint32_t g) {
     return int(live(topology.neighbor(g, 0))) + int(live(topology.neighbor(g, 1))) + int(live(topology.neighbor(g, 2)));
   };
+
   enum class Mode { FewestNeighbors, AvoidSwaps };
-  // Returns the number of swaps; the faces go to `strip`.
-  auto grow = [&](std::uint32_t f, unsigned first_exit, Mode mode, std::vector<std::uint32_t>& strip) {
+  // Returns the number of swaps; the faces go to `strip`. modes_agree: whether the other mode
+  // would have made the same choice at every step (then it grows the same strip).
+  auto grow = [&](std::uint32_t f, unsigned first_exit, Mode mode, std::vector<std::uint32_t>& strip,
+                  bool& modes_agree) {
+    modes_agree = true;
     ++stamp;
     strip.clear();
     std::uint64_t swaps = 0;
@@ -475,12 +626,24 @@ Ordering reorder_strip(const Mesh& mesh, const ReorderParams& /*params*/) {
         const std::uint32_t a = v[s], b = v[(s + 1) % 3];
         return !((a == w && b == nv) || (a == nv && b == w));
       };
-      int best = -1;
-      int best_key[3] = {0, 0, 0};
+      int best = -1, best_other = -1;
+      int best_key[3] = {0, 0, 0}, best_other_key[3] = {0, 0, 0};
+      auto less = [](const int* a, const int* b) {
+        return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]) || (a[0] == b[0] && a[1] == b[1] && a[2] < b[2]);
+      };
+      // The faces the strip can go on to; the keys only rank two or more (one is taken as it is,
+      // in either mode).
+      unsigned options[3], option_count = 0;
       for (unsigned s = 0; s < 3; ++s) {
         const std::uint32_t g = topology.neighbor(f, s);
         if (!live(g) || degenerate(idx + 3 * std::size_t(g))) continue;
         if (first && s != first_exit) continue;
+        options[option_count++] = s;
+      }
+      if (option_count == 1) best = best_other = static_cast<int>(options[0]);
+      for (unsigned o = 0; o < option_count && option_count > 1; ++o) {
+        const unsigned s = options[o];
+        const std::uint32_t g = topology.neighbor(f, s);
         int next_min = -1;  // no live neighbour at all is best: the strip ends cleanly there
         for (unsigned t = 0; t < 3; ++t) {
           const std::uint32_t h = topology.neighbor(g, t);
@@ -490,18 +653,19 @@ Ordering reorder_strip(const Mesh& mesh, const ReorderParams& /*params*/) {
         }
         const int fewest = live_neighbors(g);
         const int swap = is_swap(s) ? 1 : 0;
-        int key[3] = {fewest, next_min, swap};
-        if (mode == Mode::AvoidSwaps) {
-          key[0] = swap;
-          key[1] = fewest;
-          key[2] = next_min;
-        }
-        if (best < 0 || key[0] < best_key[0] || (key[0] == best_key[0] && key[1] < best_key[1]) ||
-            (key[0] == best_key[0] && key[1] == best_key[1] && key[2] < best_key[2])) {
+        const int fewest_key[3] = {fewest, next_min, swap}, avoid_key[3] = {swap, fewest, next_min};
+        const int* key = mode == Mode::AvoidSwaps ? avoid_key : fewest_key;
+        const int* other_key = mode == Mode::AvoidSwaps ? fewest_key : avoid_key;
+        if (best < 0 || less(key, best_key)) {
           best = static_cast<int>(s);
           for (int k = 0; k < 3; ++k) best_key[k] = key[k];
         }
+        if (best_other < 0 || less(other_key, best_other_key)) {
+          best_other = static_cast<int>(s);
+          for (int k = 0; k < 3; ++k) best_other_key[k] = other_key[k];
+        }
       }
+      modes_agree &= best == best_other;
       if (best < 0) break;
       const std::uint32_t a = v[best], b = v[(best + 1) % 3];
       if (first) {
@@ -544,10 +708,16 @@ Ordering reorder_strip(const Mesh& mesh, const ReorderParams& /*params*/) {
     // leaves isolated (each will be a 3-vertex strip of its own).
     double best_cost = 0.0;
     best_strip.clear();
-    for (const std::uint32_t f : starts)
+    for (const std::uint32_t f : starts) {
+      bool same_in_both_modes[3] = {false, false, false};
       for (Mode mode : {Mode::FewestNeighbors, Mode::AvoidSwaps})
         for (unsigned exit = 0; exit < 3; ++exit) {
-          const std::uint64_t swaps = grow(f, exit, mode, candidate);
+          // The second mode's strip is then the first's, already weighed: an equal cost never
+          // replaces the best, so it cannot change the choice.
+          if (mode == Mode::AvoidSwaps && same_in_both_modes[exit]) continue;
+          bool agree = false;
+          const std::uint64_t swaps = grow(f, exit, mode, candidate, agree);
+          if (mode == Mode::FewestNeighbors) same_in_both_modes[exit] = agree;
           std::uint64_t isolated = 0;
           for (const std::uint32_t h : candidate)
             for (unsigned t = 0; t < 3; ++t) {
@@ -562,6 +732,7 @@ Ordering reorder_strip(const Mesh& mesh, const ReorderParams& /*params*/) {
             best_strip.swap(candidate);
           }
         }
+    }
     for (const std::uint32_t g : best_strip) visit(g);
     cover.add_strip(best_strip);
     built.insert(built.end(), best_strip.begin(), best_strip.end());
