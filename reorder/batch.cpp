@@ -24,7 +24,10 @@
 // than kSmallFan live triangles is only walked while its triangles can still win: the fan has a
 // lower bound on its triangles' scores (large_fan_bound below), its triangles are visited in
 // increasing face id until the bound shows no later one can beat the best so far, and a visited
-// triangle whose border and unreusable corners already lose is not scored. The faces that led
+// triangle whose border and unreusable corners already lose is not scored (that bound is the sum
+// of three per-vertex terms kept current as the batch moves, so a mesh on few vertices, whose
+// fans' bounds are loose and whose walks visit hundreds of triangles a step, pays three loads and
+// one comparison per triangle visited). The faces that led
 // the previous step's search are scored first, so the best so far is good from the start. The
 // choice is the same triangle as a full scan's (score and face id order all candidates, and only
 // candidates that provably lose are skipped); tests/reorder/orders_on_real_meshes_test.cpp pins
@@ -118,6 +121,14 @@ Ordering reorder_batch(const Mesh& mesh, const ReorderParams&) {
     for (const std::uint32_t f : topology.faces_of_vertex(v)) live_degenerate[v] += degenerate(f);
   }
   LiveFaceLists live_faces(topology, idx);
+  // Per vertex, what its corner brings to a large-fan triangle's lower bound (see the walk
+  // below), packed so that three of them add up to pack_score(new corners, border, kWindow):
+  // (lost << 48) + (live << 8). An emitted corner's entry is set in emit (its live count fell, and
+  // it is in the batch, just used); entries otherwise only become too low, never too high (a
+  // vertex gets lost as the window moves on or its batch closes), so a stale entry is a weaker
+  // bound, never a wrong one. Steps with a large fan refresh the open and the just-closed batch's.
+  std::vector<std::uint64_t> corner_bound(vertex_count);
+  for (std::uint32_t v = 0; v < vertex_count; ++v) corner_bound[v] = (std::uint64_t{1} << 48) + (std::uint64_t{live[v]} << 8);
   std::vector<std::uint8_t> emitted(face_count, 0);
   std::vector<std::uint64_t> in_batch(vertex_count, 0);  // the batch number (1-based) a vertex was last in
   std::vector<std::uint64_t> last_use(vertex_count, 0);  // stream position of the vertex's last use
@@ -154,6 +165,7 @@ Ordering reorder_batch(const Mesh& mesh, const ReorderParams&) {
       --live[v];
       live_degenerate[v] -= is_degenerate;
       last_use[v] = position + j;
+      corner_bound[v] = std::uint64_t{live[v]} << 8;
       if (in_batch[v] != batch) {
         in_batch[v] = batch;
         batch_vertices.push_back(v);
@@ -193,6 +205,18 @@ Ordering reorder_batch(const Mesh& mesh, const ReorderParams&) {
   const auto new_corners = [&](const std::uint32_t* c) {
     const auto lost = [&](std::uint32_t u) { return in_batch[u] != batch || position - last_use[u] > kReuseReach; };
     return std::uint64_t{lost(c[0])} + (c[1] != c[0] && lost(c[1])) + (c[2] != c[0] && c[2] != c[1] && lost(c[2]));
+  };
+  std::uint64_t bound_batch = 0;
+  const auto refresh_corner_bounds = [&] {
+    const auto refresh = [&](std::uint32_t u) {
+      const bool lost = in_batch[u] != batch || position - last_use[u] > kReuseReach;
+      corner_bound[u] = (std::uint64_t{lost} << 48) + (std::uint64_t{live[u]} << 8);
+    };
+    if (bound_batch != batch) {
+      bound_batch = batch;
+      for (const std::uint32_t u : closed_batch) refresh(u);
+    }
+    for (const std::uint32_t u : batch_vertices) refresh(u);
   };
   struct LargeFan {
     std::uint64_t bound;
@@ -263,6 +287,7 @@ Ordering reorder_batch(const Mesh& mesh, const ReorderParams&) {
         fan.min_cost = static_cast<unsigned>(!reusable(v) + 2 - others);
         fan.bound = pack_score(fan.min_cost, border, oldest);
       }
+      refresh_corner_bounds();
       std::sort(large.begin(), large.end(), [](const LargeFan& a, const LargeFan& b) {
         return a.bound != b.bound ? a.bound < b.bound : a.vertex < b.vertex;
       });
@@ -272,9 +297,12 @@ Ordering reorder_batch(const Mesh& mesh, const ReorderParams&) {
           if (fan.bound > best_score || (fan.bound == best_score && f > best)) return false;
           // Its border and the corners that cannot be reused (the oldest possible age) already
           // lose: not scored.
-          const std::uint64_t border = std::uint64_t{live[c[0]]} + live[c[1]] + live[c[2]];
-          if (pack_score(0, border, kWindow) > best_score) return true;
-          if (pack_score(new_corners(c), border, kWindow) > best_score) return true;
+          if (c[0] != c[1] && c[1] != c[2] && c[0] != c[2]) {
+            if (corner_bound[c[0]] + corner_bound[c[1]] + corner_bound[c[2]] > best_score) return true;
+          } else {
+            const std::uint64_t border = std::uint64_t{live[c[0]]} + live[c[1]] + live[c[2]];
+            if (pack_score(new_corners(c), border, kWindow) > best_score) return true;
+          }
           consider(f);
           return true;
         });
