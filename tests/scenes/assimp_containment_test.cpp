@@ -1,5 +1,6 @@
 // libassimp's own crashes stay outside rastrace: the assimp loader reads a file first in a child
 // process (scenes/assimp_io.cpp), so a file that crashes libassimp is an InputError naming it.
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -57,6 +58,26 @@ TEST(AssimpContainment, AColladaFileClaimingBillionsOfTrianglesIsAnErrorNamingTh
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), HasSubstr(path + ": assimp "));
   }
+}
+
+// The child's CPU limit comes from RASTRACE_ASSIMP_CPU_SECONDS when set (the fuzz harness sets
+// 1 s): a value outside 1 to 3600 whole seconds is an error naming the variable, not a silent
+// default, and a valid one still loads the model.
+TEST(AssimpContainment, TheChildsCpuLimitFromTheEnvironmentIsValidated) {
+  const std::string cube = testing::data_file("assimp/ASE/RotatingCube.ASE");
+  for (const char* bad : {"0", "3601", "-5", "2s", "99999999999999999999999"}) {
+    ::setenv("RASTRACE_ASSIMP_CPU_SECONDS", bad, 1);
+    try {
+      load_mesh(cube);
+      ADD_FAILURE() << "accepted " << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()),
+                "RASTRACE_ASSIMP_CPU_SECONDS=" + std::string(bad) + ": expected whole seconds from 1 to 3600");
+    }
+  }
+  ::setenv("RASTRACE_ASSIMP_CPU_SECONDS", "30", 1);
+  EXPECT_EQ(load_mesh(cube).indices.size(), 36u);
+  ::unsetenv("RASTRACE_ASSIMP_CPU_SECONDS");
 }
 
 }  // namespace
