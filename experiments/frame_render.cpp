@@ -125,7 +125,7 @@ Frame render_frame(const FrameSpec& spec) {
   }
   TeeSink tee(sinks);
   // Frames 0..N-1 along the scene's camera path; the caches keep their contents between frames.
-  // One frame is drawn exactly as before (no begin_frame: a version 2 trace, the same events).
+  // One frame is drawn exactly as before (no begin_frame: a single-frame trace, the same events).
   std::optional<RenderResult> last;
   FramesSink frames_sink(tee);
   std::uint64_t covered_pixels = 0;

@@ -32,7 +32,7 @@ struct FrameSpec {
   // one), through caches that keep their contents between frames (the inter-frame reuse of Cox,
   // Bhandari and Shantz 1998). The table's counts are totals over all frames (its "frames"
   // parameter says how many), the image is the last frame's, the trace holds every frame
-  // (version 3), and with a hierarchy a "Caches per frame" table follows its totals.
+  // (each chunk stamped with its frame), and with a hierarchy a "Caches per frame" table follows its totals.
   unsigned frames = 1;
   bool miss_map = false;  // render --miss-map: charge the texture cache's misses to their pixels (frame 1)
 };

@@ -1,6 +1,7 @@
 // One trace chunk's records behind a valid checksum (traces/chunk_codec.cpp through
 // TraceReader::read_chunk). The input is
-//   u8 kind (1 vertex, 2 texel, 3 address, 4 framebuffer; taken modulo 4) | u8 flags |
+//   u8 kind (1 vertex, 2 texel, 3 address, 4 framebuffer; taken modulo 4) | u8 flags (bit 7 set:
+//   a version 2 file, where run columns are refused; clear: today's version) |
 //   u32 record count (little endian) | the encoded records (before zstd)
 // and the harness wraps it in a well-formed file: metadata, the zstd frame of the records, the
 // chunk header with its CRC32C, a one-entry index and the footer, so every input reaches the
@@ -35,7 +36,8 @@ RASTRACE_FUZZ_TARGET(trace_chunk) {
   using namespace rastrace;
   if (size < 6) return;
   const std::uint8_t kind = static_cast<std::uint8_t>(data[0] % 4 + 1);
-  const std::uint8_t flags = data[1];
+  const bool old_version = (data[1] & 0x80) != 0;
+  const std::uint8_t flags = data[1] & 0x7F;
   std::uint32_t records;
   std::memcpy(&records, data + 2, 4);
   // At most 2^18 records (4x the writer's default chunk): the decoders' work is linear in the
@@ -48,7 +50,7 @@ RASTRACE_FUZZ_TARGET(trace_chunk) {
   const std::size_t raw_bytes = size - 6;
 
   std::string file(kTraceMagic, 8);
-  file += le(kSingleFrameTraceVersion, 4);
+  file += le(old_version ? kSingleFrameTraceVersion : kTraceVersion, 4);
   const std::string json = metadata_to_json(TraceMetadata{});
   file += le(static_cast<std::uint32_t>(json.size()), 4);
   file += json;

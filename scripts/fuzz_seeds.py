@@ -85,7 +85,7 @@ def trace_seeds(out, rastrace):
         ["builtin:grid", "--size", "32x24"],
         ["builtin:grid", "--size", "24x16", "--order", "tipsy"],
         ["builtin:grid", "--size", "16x16", "--raster", "tiled8", "--order", "strip"],
-        ["builtin:grid", "--size", "16x12", "--frames", "2"],  # version 3: frame numbers
+        ["builtin:grid", "--size", "16x12", "--frames", "2"],  # several frames: frame numbers
     ]
     with tempfile.TemporaryDirectory() as tmp:
         traces = [ROOT / "tests" / "traces" / "data" / "v1_grid_16x12.rtrace"]

@@ -34,9 +34,70 @@ std::uint64_t unzigzag(std::uint64_t z) { return (z >> 1) ^ (~(z & 1) + 1); }
 
 constexpr std::uint8_t kEscapedBytes = 0x81;  // column mode: 1-byte deltas, 0xFF escapes to 8 bytes
 
+constexpr std::uint8_t kRuns = 0x82;  // column mode: runs of equal values, each with its length
+constexpr std::uint64_t kLongestRun = 0xFF;  // a longer run is stored as several, with zero deltas
+constexpr std::uint64_t kShortestAverageRun = 4;
+
+struct RunCount {
+  std::uint64_t runs = 0;   // lengths stored (longer runs split)
+  std::uint64_t large = 0;  // run deltas that escape to 8 bytes
+};
+
+template <typename Get>
+RunCount count_runs(std::size_t n, Get get) {
+  RunCount count;
+  std::uint64_t length = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool starts = i == 0 || get(i) != get(i - 1) || length == kLongestRun;
+    if (starts) {
+      ++count.runs;
+      count.large += i > 0 && zigzag(get(i) - get(i - 1)) >= 0xFF;
+      length = 0;
+    }
+    ++length;
+  }
+  return count;
+}
+
+// Mode kRuns: u32 runs | u32 escaped deltas | the runs' lengths (1 byte each, 1..255) | the deltas
+// between consecutive runs' values (runs - 1 bytes, zig-zag, 0xFF escapes) | the escaped deltas (8
+// bytes each). The first run's value is the column's first value. Fields that hold still for
+// several records (the mip level of a bilinear footprint, a fragment's pixel and triangle over
+// its texels) cost two bytes a run instead of one a record, and zstd has half as much to produce.
+template <typename Get>
+void put_runs(std::string& out, std::size_t n, Get get, const RunCount& count) {
+  out.push_back(static_cast<char>(kRuns));
+  put<std::uint64_t>(out, get(0));
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(count.runs));
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(count.large));
+  const std::size_t start = out.size();
+  out.resize(start + count.runs + (count.runs - 1) + 8 * count.large);
+  char* lengths = out.data() + start;
+  char* deltas = lengths + count.runs;
+  char* exceptions = deltas + (count.runs - 1);
+  std::uint64_t length = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool starts = i == 0 || get(i) != get(i - 1) || length == kLongestRun;
+    if (starts && i > 0) {
+      *lengths++ = static_cast<char>(length);
+      const std::uint64_t z = zigzag(get(i) - get(i - 1));
+      if (z < 0xFF) {
+        *deltas++ = static_cast<char>(z);
+      } else {
+        *deltas++ = static_cast<char>(0xFF);
+        std::memcpy(exceptions, &z, 8);
+        exceptions += 8;
+      }
+    }
+    length = starts ? 1 : length + 1;
+  }
+  *lengths = static_cast<char>(length);
+}
+
 // Encodes one field of every record: get(i) is the field's value in record i. The column uses the
-// cheapest of: fixed-width deltas (0, 1, 2, 4 or 8 bytes), or 1-byte deltas where the rare large
-// jump (a new texture row, a far vertex) escapes to an 8-byte delta stored after the bytes.
+// cheapest of: fixed-width deltas (0, 1, 2, 4 or 8 bytes), 1-byte deltas where the rare large
+// jump (a new texture row, a far vertex) escapes to an 8-byte delta stored after the bytes, or
+// runs of equal values (trace version 4 on).
 template <typename Get>
 void put_column(std::string& out, std::size_t n, Get get) {
   std::uint64_t widest = 0, large = 0;
@@ -52,6 +113,16 @@ void put_column(std::string& out, std::size_t n, Get get) {
                                                        : 8;
   const std::uint64_t deltas = n ? n - 1 : 0;
   const bool escaped = width > 1 && deltas + 4 + 8 * large < deltas * width;
+  if (width != 0) {
+    // Runs only where they average 4 records or more: shorter ones save zstd little and cost the
+    // decoder a run's overhead every record or two.
+    const RunCount runs = count_runs(n, get);
+    const std::uint64_t plain = escaped ? deltas + 4 + 8 * large : deltas * width;
+    if (runs.runs * kShortestAverageRun <= n && 8 + 2 * runs.runs - 1 + 8 * runs.large < plain) {
+      put_runs(out, n, get, runs);
+      return;
+    }
+  }
   out.push_back(static_cast<char>(escaped ? kEscapedBytes : width));
   put<std::uint64_t>(out, n ? get(0) : 0);
   if (width == 0) return;
@@ -115,10 +186,57 @@ struct Column {
   const std::uint8_t* exceptions = nullptr;  // mode kEscapedBytes: the next escaped delta
   const std::uint8_t* exceptions_end = nullptr;
   bool overrun = false;  // more escapes than escaped deltas
+  // Mode kRuns: the next run's length and the records left in the current run. The lengths are
+  // checked to add up to the records when the column is opened, so decoding never runs out.
+  const std::uint8_t* lengths = nullptr;
+  std::uint64_t run_left = 0;
 };
 
+// Mode kRuns after its mode byte and first value: checks that the run lengths add up to the
+// records and skips the column's bytes.
+bool open_runs(Cursor& c, std::size_t n, const char* what, Column& col) {
+  const std::uint32_t runs = c.get<std::uint32_t>(what);
+  const std::uint32_t large = c.get<std::uint32_t>(what);
+  if (!c.error.empty()) return false;
+  if (n == 0 || runs == 0 || runs > n || large >= runs) {
+    c.error = std::to_string(runs) + " runs with " + std::to_string(large) + " escaped deltas for " +
+              std::to_string(n) + " records in the " + what + " column (expected 1 to " + std::to_string(n) +
+              " runs, fewer escapes)";
+    return false;
+  }
+  if (!c.take(std::size_t{runs} + (runs - 1) + std::size_t{large} * 8, what)) return false;
+  // The lengths' sum and whether one is 0, eight bytes at a time.
+  std::uint64_t total = 0, zero_bytes = 0;
+  std::uint32_t r = 0;
+  for (; r + 8 <= runs; r += 8) {
+    std::uint64_t eight;
+    std::memcpy(&eight, c.p + r, 8);
+    zero_bytes |= (eight - 0x0101010101010101ull) & ~eight & 0x8080808080808080ull;
+    const std::uint64_t pairs = (eight & 0x00FF00FF00FF00FFull) + ((eight >> 8) & 0x00FF00FF00FF00FFull);
+    total += (pairs * 0x0001000100010001ull) >> 48;  // the four 16-bit sums, added in the top lanes
+  }
+  bool empty_run = zero_bytes != 0;
+  for (; r < runs; ++r) {
+    total += c.p[r];
+    empty_run |= c.p[r] == 0;
+  }
+  if (empty_run || total != n) {
+    c.error = std::string("run lengths ") + (empty_run ? "include 0" : "add up to " + std::to_string(total)) +
+              " for " + std::to_string(n) + " records in the " + what + " column";
+    return false;
+  }
+  col.lengths = c.p + 1;
+  col.run_left = c.p[0] - 1u;  // record 0, the column's first value, is decoded by the caller
+  col.deltas = c.p + runs;
+  col.exceptions = col.deltas + (runs - 1);
+  col.exceptions_end = col.exceptions + std::size_t{large} * 8;
+  c.p = col.exceptions_end;
+  return true;
+}
+
 // Reads a column's header and skips its bytes; false (with c.error) when they are not all there.
-bool open_column(Cursor& c, std::size_t n, std::uint64_t limit, const char* what, Column& col) {
+// Mode kRuns is valid only where `runs` (trace version 4 on).
+bool open_column(Cursor& c, std::size_t n, std::uint64_t limit, const char* what, Column& col, bool runs) {
   col.what = what;
   col.limit = limit;
   col.mode = c.get<std::uint8_t>(what);
@@ -126,6 +244,7 @@ bool open_column(Cursor& c, std::size_t n, std::uint64_t limit, const char* what
   col.all = n ? col.value : 0;  // no records, no values to check
   if (!c.error.empty()) return false;
   const std::uint8_t m = col.mode;
+  if (m == kRuns && runs) return open_runs(c, n, what, col);
   if (m != 0 && m != 1 && m != 2 && m != 4 && m != 8 && m != kEscapedBytes) {
     c.error = std::string("bad column width ") + std::to_string(m) + " in the " + what + " column";
     return false;
@@ -150,7 +269,7 @@ bool open_column(Cursor& c, std::size_t n, std::uint64_t limit, const char* what
 
 // What went wrong in a decoded column, or "".
 std::string column_error(const Column& col) {
-  if (col.mode == kEscapedBytes && (col.overrun || col.exceptions != col.exceptions_end))
+  if ((col.mode == kEscapedBytes || col.mode == kRuns) && (col.overrun || col.exceptions != col.exceptions_end))
     return std::string("escaped deltas do not match their escapes in the ") + col.what + " column";
   if (col.all > col.limit) return std::string("a value in the ") + col.what + " column is out of range";
   return "";
@@ -195,22 +314,26 @@ void decode_fixed(Column& col, Record* out, std::size_t begin, std::size_t end) 
   col.deltas = p;
 }
 
+// A 1-byte zig-zag delta of mode 0x81 or 0x82, or for the escape 0xFF the column's next escaped
+// delta (none left: overrun, reported after the column).
+inline std::uint64_t full_delta(Column& col, std::uint64_t z) {
+  if (z == 0xFF) [[unlikely]] {
+    if (col.exceptions == col.exceptions_end) {
+      col.overrun = true;
+      return 0;
+    }
+    std::memcpy(&z, col.exceptions, 8);
+    col.exceptions += 8;
+  }
+  return z;
+}
+
 template <typename Record, typename Field, Field Record::*member>
 void decode_escaped(Column& col, Record* out, std::size_t begin, std::size_t end) {
   std::uint64_t value = col.value, all = col.all;
   const std::uint8_t* p = col.deltas;
   const auto step = [&](std::size_t i) {
-    std::uint64_t z = p[i - begin];
-    if (z == 0xFF) [[unlikely]] {
-      if (col.exceptions == col.exceptions_end) {
-        col.overrun = true;
-        z = 0;
-      } else {
-        std::memcpy(&z, col.exceptions, 8);
-        col.exceptions += 8;
-      }
-    }
-    value += unzigzag(z);
+    value += unzigzag(full_delta(col, p[i - begin]));
     all |= value;
     out[i].*member = static_cast<Field>(value);
   };
@@ -231,6 +354,35 @@ void decode_escaped(Column& col, Record* out, std::size_t begin, std::size_t end
   col.deltas = p + (end - begin);
 }
 
+template <typename Record, typename Field, Field Record::*member>
+void decode_runs(Column& col, Record* out, std::size_t begin, std::size_t end) {
+  std::uint64_t value = col.value, all = col.all, left = col.run_left;
+  const auto next_run = [&] {  // open_runs checked that the lengths cover every record
+    left = *col.lengths++;
+    value += unzigzag(full_delta(col, *col.deltas++));
+    all |= value;
+  };
+  std::size_t i = begin;
+  // Eight records at a time whatever the run's length: the stores past a short run's end are
+  // overwritten by the runs after it (all before `end`), and no loop exit depends on the length.
+  while (i + 8 <= end) {
+    if (left == 0) next_run();
+    for (int k = 0; k < 8; ++k) out[i + k].*member = static_cast<Field>(value);
+    const std::uint64_t step = std::min<std::uint64_t>(left, 8);
+    i += step;
+    left -= step;
+  }
+  while (i < end) {
+    if (left == 0) next_run();
+    const std::size_t stop = std::min<std::size_t>(end, i + left);
+    left -= stop - i;
+    for (; i < stop; ++i) out[i].*member = static_cast<Field>(value);
+  }
+  col.value = value;
+  col.all = all;
+  col.run_left = left;
+}
+
 // Decodes records [begin, end) (begin >= 1) of one column into the field `member` of `out`.
 template <typename Record, typename Field, Field Record::*member>
 void decode_range(Column& col, Record* out, std::size_t begin, std::size_t end) {
@@ -249,6 +401,9 @@ void decode_range(Column& col, Record* out, std::size_t begin, std::size_t end) 
       break;
     case 8:
       decode_fixed<8, Record, Field, member>(col, out, begin, end);
+      break;
+    case kRuns:
+      decode_runs<Record, Field, member>(col, out, begin, end);
       break;
     default:
       decode_escaped<Record, Field, member>(col, out, begin, end);
@@ -306,7 +461,7 @@ void encode_framebuffer_records(std::span<const FramebufferAccess> f, std::strin
 }
 
 std::string decode_vertex_records(std::span<const std::uint8_t> raw, std::uint32_t n, DrawInfo& draw,
-                                  std::vector<VertexFetch>& out) {
+                                  std::vector<VertexFetch>& out, bool runs) {
   Cursor c{raw.data(), raw.data() + raw.size(), {}};
   draw.draw = c.get<std::uint32_t>("draw header");
   const std::uint8_t type_byte = c.get<std::uint8_t>("draw header");
@@ -321,7 +476,7 @@ std::string decode_vertex_records(std::span<const std::uint8_t> raw, std::uint32
   // Allocate only once the bytes for n records are known to be there (the column, the bitmap):
   // a damaged count must not cost gigabytes before the error.
   Column vertex;
-  if (!open_column(c, n, 0xFFFFFFFFu, "vertex", vertex)) return c.error;
+  if (!open_column(c, n, 0xFFFFFFFFu, "vertex", vertex, runs)) return c.error;
   if (!c.take((n + 7) / 8, "primitive start bitmap")) return c.error;
   out.resize(n);
   VertexFetch* f = out.data();
@@ -337,7 +492,7 @@ std::string decode_vertex_records(std::span<const std::uint8_t> raw, std::uint32
 }
 
 std::string decode_texel_records(std::span<const std::uint8_t> raw, std::uint32_t n, std::vector<TexelAccess>& out,
-                                 bool details) {
+                                 bool details, bool runs) {
   Cursor c{raw.data(), raw.data() + raw.size(), {}};
   Column col[7];
   const std::uint64_t limits[7] = {0xFFFFFFFFu, 0xFFu, 0xFFFFFFFFu, 0xFFFFFFFFu, 0xFFFFu, 0xFFFFu, 0xFFFFFFFFu};
@@ -345,7 +500,7 @@ std::string decode_texel_records(std::span<const std::uint8_t> raw, std::uint32_
   // Columns after a damaged header are not decoded; the ones before it are, and their errors
   // come first (the order a column-by-column decoder would report them in).
   int opened = 0;
-  while (opened < 7 && open_column(c, n, limits[opened], names[opened], col[opened])) ++opened;
+  while (opened < 7 && open_column(c, n, limits[opened], names[opened], col[opened], runs)) ++opened;
   const bool all = opened == 7;
   if (opened == 0) return c.error;
   out.resize(n);  // after the headers: their bytes are there (see decode_vertex_records)
@@ -400,7 +555,7 @@ std::string decode_texel_records(std::span<const std::uint8_t> raw, std::uint32_
 }
 
 std::string decode_framebuffer_records(std::span<const std::uint8_t> raw, std::uint32_t n,
-                                       std::vector<FramebufferAccess>& out) {
+                                       std::vector<FramebufferAccess>& out, bool runs) {
   Cursor c{raw.data(), raw.data() + raw.size(), {}};
   Column col[5];
   // Range checks OR every value of a column, so limits are all-ones masks; the operation's
@@ -408,7 +563,7 @@ std::string decode_framebuffer_records(std::span<const std::uint8_t> raw, std::u
   const std::uint64_t limits[5] = {0xFFFFu, 0xFFFFu, 0x3u, 0xFu, 0xFFFFFFFFu};
   const char* names[5] = {"x", "y", "operation", "mask", "triangle"};
   for (int k = 0; k < 5; ++k)
-    if (!open_column(c, n, limits[k], names[k], col[k])) return c.error;
+    if (!open_column(c, n, limits[k], names[k], col[k], runs)) return c.error;
   out.resize(n);  // after the headers: their bytes are there (see decode_vertex_records)
   FramebufferAccess* f = out.data();
   if (n > 0) {
@@ -437,11 +592,11 @@ std::string decode_framebuffer_records(std::span<const std::uint8_t> raw, std::u
 }
 
 std::string decode_address_records(std::span<const std::uint8_t> raw, std::uint32_t n,
-                                   std::vector<AddressAccess>& out) {
+                                   std::vector<AddressAccess>& out, bool runs) {
   Cursor c{raw.data(), raw.data() + raw.size(), {}};
   Column address, label;
-  if (!open_column(c, n, ~std::uint64_t{0}, "address", address)) return c.error;
-  const bool both = open_column(c, n, 0xFFu, "label", label);
+  if (!open_column(c, n, ~std::uint64_t{0}, "address", address, runs)) return c.error;
+  const bool both = open_column(c, n, 0xFFu, "label", label, runs);
   out.resize(n);  // after the headers: their bytes are there (see decode_vertex_records)
   AddressAccess* a = out.data();
   if (n > 0) a[0] = {address.value, static_cast<std::uint8_t>(label.value)};

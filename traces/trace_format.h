@@ -1,4 +1,4 @@
-// The rastrace trace container, version 3 (all integers little endian):
+// The rastrace trace container, version 4 (all integers little endian):
 //
 //   header   "RASTRACE" | u32 version | u32 metadata bytes | metadata JSON | u32 CRC32C(JSON)
 //   chunks   32-byte chunk header | payload (zstd frame of the encoded records, chunk_codec.h)
@@ -21,11 +21,14 @@
 // depth writes and colour writes per 2x2 quad, chunk_codec.h) and changes nothing else, so a
 // reader of version 2 reads version 1 files as they are. 3 adds the frame numbers (0..65535) in
 // the chunk header's and the index entry's formerly reserved u16, which versions 1 and 2 keep
-// zero (their frame is 0 throughout). The writer writes version 2 when every chunk is of frame 0
-// and version 3 when some chunk is of a later frame (render --frames N with N > 1), so
-// single-frame traces are byte for byte those of earlier writers; a reader refuses a version 3
-// file whose chunks are all of frame 0 (the version field is outside every checksum, and 2 and 3
-// differ by one bit). The index at the end lets a reader seek to any chunk and
+// zero (their frame is 0 throughout). Writers of version 3 wrote version 2 when every chunk was
+// of frame 0 and version 3 when some chunk was of a later frame (render --frames N with N > 1); a
+// reader refuses a version 3 file whose chunks are all of frame 0 (the version field is outside
+// every checksum, and 2 and 3 differ by one bit). 4 lets record columns be stored as runs of equal values (chunk_codec.h, mode
+// 0x82), which halves what zstd produces for a rendered texel chunk; the container is version 3's,
+// frames included, and every file of the writer is version 4, of one frame or several (no
+// single-bit flip of 4 gives 1, 2 or 3). Readers refuse run columns in files of versions 1 to 3.
+// The index at the end lets a reader seek to any chunk and
 // know every count before reading; a file without its footer was not finished (truncated).
 #pragma once
 
@@ -37,9 +40,10 @@ namespace rastrace {
 
 inline constexpr char kTraceMagic[8] = {'R', 'A', 'S', 'T', 'R', 'A', 'C', 'E'};
 inline constexpr char kTraceEndMagic[8] = {'R', 'T', 'R', 'C', 'E', 'N', 'D', '1'};
-inline constexpr std::uint32_t kTraceVersion = 3;             // the newest the reader reads
-inline constexpr std::uint32_t kSingleFrameTraceVersion = 2;  // what the writer writes for one frame
+inline constexpr std::uint32_t kTraceVersion = 4;             // the newest the reader reads, what the writer writes
+inline constexpr std::uint32_t kSingleFrameTraceVersion = 2;  // what writers before version 4 wrote for one frame
 inline constexpr std::uint32_t kFramesTraceVersion = 3;       // the first version with frame numbers
+inline constexpr std::uint32_t kRunsTraceVersion = 4;         // the first version with run columns
 inline constexpr std::uint32_t kOldestTraceVersion = 1;  // the oldest the reader reads
 inline constexpr std::uint32_t kChunkTag = 0x4B4E4843u;  // "CHNK"
 inline constexpr std::uint32_t kIndexTag = 0x58444E49u;  // "INDX"

@@ -138,19 +138,20 @@ void load_chunk(const TraceLayout& file, ChunkSource& src, std::size_t i, Decode
   out.flags = flags;
   out.first_record = first;
   std::string error;
+  const bool runs = file.version >= kRunsTraceVersion;
   // Only the decoded kind's vector is resized (no clearing: that would zero-fill it again).
   switch (info.kind) {
     case RecordKind::Vertex:
-      error = decode_vertex_records(src.raw, records, out.draw, out.vertices);
+      error = decode_vertex_records(src.raw, records, out.draw, out.vertices, runs);
       break;
     case RecordKind::Texel:
-      error = decode_texel_records(src.raw, records, out.texels, texel_details);
+      error = decode_texel_records(src.raw, records, out.texels, texel_details, runs);
       break;
     case RecordKind::Framebuffer:
-      error = decode_framebuffer_records(src.raw, records, out.framebuffer);
+      error = decode_framebuffer_records(src.raw, records, out.framebuffer, runs);
       break;
     default:
-      error = decode_address_records(src.raw, records, out.addresses);
+      error = decode_address_records(src.raw, records, out.addresses, runs);
       break;
   }
   if (!error.empty()) throw_at_byte(path, info.offset, where + error);
@@ -386,11 +387,11 @@ TraceReader::TraceReader(const std::string& path) : path_(path) {
     previous_end = c.offset + kChunkHeaderBytes;
     chunks_.push_back(c);
   }
-  if (version_ >= kFramesTraceVersion && frames_ == 1)
+  if (version_ == kFramesTraceVersion && frames_ == 1)
     throw_at_byte(path, 8,
                   "version " + std::to_string(version_) +
                       " (several frames) but every chunk is of frame 0: a damaged "
-                      "version field (a single-frame trace is version 2)");
+                      "version field (a single-frame trace is version 2 or 4)");
   state_ = std::make_unique<ReadState>(std::move(in_));
   state_->ahead_stream.open(path, std::ios::binary);
 }
@@ -543,9 +544,10 @@ void TraceReader::check_chunk(std::size_t i) {
 
 void replay_trace(TraceReader& reader, EventSink& sink, ReplayKinds kinds, Progress* progress) {
   reader.set_read_ahead_kinds(kinds);
-  // Version 3 files hold several frames: the sink learns of each before its first chunk (frame 0
-  // included). Frames rise in file order per kind; a kind lagging behind never steps back.
-  const bool frames = reader.version() >= kFramesTraceVersion;
+  // A file of several frames (version 3 or 4): the sink learns of each before its first chunk
+  // (frame 0 included). Frames rise in file order per kind; a kind lagging behind never steps
+  // back. A single-frame file announces none, whatever its version.
+  const bool frames = reader.frames() > 1;
   std::int64_t frame = -1;
   for (std::size_t i = 0; i < reader.chunks().size(); ++i) {
     const ChunkInfo& info = reader.chunks()[i];

@@ -106,7 +106,7 @@ class TraceReader {
 };
 
 // Feeds every chunk of the file into the sink, in file order, then calls sink.finish(). A file of
-// several frames (version 3) calls sink.begin_frame(f) before the first chunk of each frame f. Chunks
+// several frames (version 3 or 4) calls sink.begin_frame(f) before the first chunk of each frame f. Chunks
 // of kinds not asked for are still checked (check_chunk), so a damaged file never passes.
 // Progress (when given) advances by records.
 void replay_trace(TraceReader& reader, EventSink& sink, ReplayKinds kinds = {}, Progress* progress = nullptr);

@@ -27,11 +27,6 @@ void put(std::string& out, T value) {
   std::memcpy(bytes, &value, sizeof(T));
   out.append(bytes, sizeof(T));
 }
-void put_version(std::ostream& out, std::uint32_t version) {
-  std::string bytes;
-  put<std::uint32_t>(bytes, version);
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
 }  // namespace
 
 // A full chunk on its way to the file: its records of one kind (the other vectors are empty).
@@ -158,7 +153,7 @@ TraceWriter::TraceWriter(const std::string& path, TraceMetadata metadata, TraceW
   if (metadata.tool_version.empty()) metadata.tool_version = RASTRACE_VERSION;
   const std::string json = metadata_to_json(metadata);
   std::string header(kTraceMagic, 8);
-  put<std::uint32_t>(header, kSingleFrameTraceVersion);  // finish() makes it 3 for several frames
+  put<std::uint32_t>(header, kTraceVersion);
   put<std::uint32_t>(header, static_cast<std::uint32_t>(json.size()));
   header += json;
   put<std::uint32_t>(header, crc32c(json.data(), json.size()));
@@ -331,17 +326,6 @@ void TraceWriter::finish() {
   footer.append(kTraceEndMagic, 8);
   state.write(index.data(), index.size());
   state.write(footer.data(), footer.size());
-  // Chunks of a frame after 0 make the file version 3 (its header is that of version 2 but for this
-  // field); a reader refuses version 3 without them, so a bit flip from 2 to 3 cannot pass.
-  bool several_frames = false;
-  for (const ChunkInfo& c : state.index) several_frames |= c.frame > 0;
-  if (several_frames) {
-    std::ofstream& out = state.file.stream();
-    out.seekp(8);
-    put_version(out, kFramesTraceVersion);
-    out.seekp(0, std::ios::end);
-    if (!out) throw_in_file(state.path, "write failed");
-  }
   state.file.commit();
   finished_ = true;
 }

@@ -14,8 +14,7 @@
 //   writer.finish();
 //
 // Several frames: begin_frame(f) ends every open chunk (no chunk spans two frames) and stamps the
-// chunks after it with f. The file is version 2 while every chunk is of frame 0 and version 3
-// when a chunk of a later frame was written (finish() then sets the header's version), trace_format.h.
+// chunks after it with f. Every file is version 4, of one frame or several (trace_format.h).
 #pragma once
 
 #include <cstdint>

@@ -102,7 +102,7 @@ TEST(CameraPathFrames, AnOrbitsPerFrameReplayEqualsTheLiveRenderFrameByFrameAndL
   ASSERT_EQ(live.rows.size(), 12u);
 
   TraceReader reader(spec.trace);
-  EXPECT_EQ(reader.version(), 3u);
+  EXPECT_EQ(reader.version(), 4u);
   EXPECT_EQ(reader.frames(), 6u);
   const Table replayed = per_frame_replay_table(spec.trace, {}, spec.hierarchy);
   ASSERT_EQ(replayed.rows.size(), live.rows.size());

@@ -153,7 +153,7 @@ TEST_F(DamagedTrace, EverySingleBitFlipOfASmallRenderedTraceIsAnErrorNamingItsBy
   expect_every_bit_flip_named(small_trace());
 }
 
-// Version 3: frame numbers in the chunk headers and the index, and a version field one bit from 2.
+// Several frames: frame numbers in the chunk headers and the index.
 TEST_F(DamagedTrace, EverySingleBitFlipOfATwoFrameTraceIsAnErrorNamingItsByteAndChunk) {
   const TempDir dir;
   const std::string trace = dir.file("frames.rtrace");
@@ -163,7 +163,7 @@ TEST_F(DamagedTrace, EverySingleBitFlipOfATwoFrameTraceIsAnErrorNamingItsByteAnd
   // The version field, every chunk header (frame included) and the index with its frames and the
   // footer; the payloads are damaged like version 2's (the test above).
   const TraceReader reader(trace);
-  ASSERT_EQ(reader.version(), 3u);
+  ASSERT_EQ(reader.version(), 4u);
   ASSERT_EQ(reader.frames(), 2u);
   std::vector<std::pair<std::uint64_t, std::uint64_t>> ranges = {{8, 12}};
   for (const ChunkInfo& c : reader.chunks()) ranges.emplace_back(c.offset, c.offset + kChunkHeaderBytes);

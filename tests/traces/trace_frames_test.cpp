@@ -1,6 +1,6 @@
-// Traces of several frames (trace container version 3): the writer ends its chunks at every frame
-// boundary and stamps them with the frame, readers report the frames and replays announce them,
-// a single frame still writes version 2, and damaged frame numbers are errors naming the byte.
+// Traces of several frames (trace container version 3 on): the writer ends its chunks at every
+// frame boundary and stamps them with the frame, readers report the frames and replays announce
+// them (a single frame announces none), and damaged frame numbers are errors naming the byte.
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -102,7 +102,7 @@ TEST(TraceFrames, EveryFramesChunksCarryItsNumberAndNoChunkSpansTwoFrames) {
   const std::string path = dir.file("frames.rtrace");
   write_frames(path, 3);
   TraceReader reader(path);
-  EXPECT_EQ(reader.version(), 3u);
+  EXPECT_EQ(reader.version(), 4u);
   EXPECT_EQ(reader.frames(), 3u);
   // Texels per frame 7, 14, 21 in chunks of 4: 2 + 4 + 6 chunks (the last of each frame partial).
   std::vector<std::uint32_t> texel_chunks(3, 0), texel_records(3, 0);
@@ -138,19 +138,19 @@ TEST(TraceFrames, ReplayAnnouncesEachFrameBeforeItsRecords) {
   EXPECT_EQ(texels_only.texels, log.texels);
 }
 
-TEST(TraceFrames, OneFrameIsVersionTwoWhetherOrNotFrameZeroIsAnnounced) {
+TEST(TraceFrames, OneFrameIsTheSameFileAndReplaysWithoutFramesWhetherOrNotFrameZeroIsAnnounced) {
   const TempDir dir;
   write_frames(dir.file("announced.rtrace"), 1, true);
   write_frames(dir.file("silent.rtrace"), 1, false);
   const std::string bytes = testing::slurp(dir.file("silent.rtrace"));
-  EXPECT_EQ(load<std::uint32_t>(bytes, 8), 2u);
+  EXPECT_EQ(load<std::uint32_t>(bytes, 8), 4u);
   EXPECT_EQ(testing::slurp(dir.file("announced.rtrace")), bytes);
   TraceReader reader(dir.file("silent.rtrace"));
-  EXPECT_EQ(reader.version(), 2u);
+  EXPECT_EQ(reader.version(), 4u);
   EXPECT_EQ(reader.frames(), 1u);
   FrameLog log;
   replay_trace(reader, log);
-  EXPECT_TRUE(log.frames.empty());  // a version 2 replay announces no frame
+  EXPECT_TRUE(log.frames.empty());  // a single-frame replay announces no frame
   EXPECT_EQ(log.texels, (std::vector<std::uint64_t>{7}));
 }
 
