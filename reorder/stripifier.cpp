@@ -372,7 +372,9 @@ class StripCover {
     noted_.push_back(0);
     std::uint32_t prev = kNoFace, at = head, i = 0;
     for (;;) {
-      strip_current_[path_[at]] = 0;
+      // From reindex_all, path_ holds ids of the strips before it cleared strip_current_ (whose
+      // marks it resets afterwards): only a current id may be marked.
+      if (path_[at] < strip_current_.size()) strip_current_[path_[at]] = 0;
       path_[at] = id;
       pos_[at] = i++;
       const std::uint32_t next = step(at, prev);
