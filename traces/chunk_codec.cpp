@@ -38,25 +38,19 @@ constexpr std::uint8_t kRuns = 0x82;  // column mode: runs of equal values, each
 constexpr std::uint64_t kLongestRun = 0xFF;  // a longer run is stored as several, with zero deltas
 constexpr std::uint64_t kShortestAverageRun = 4;
 
-struct RunCount {
-  std::uint64_t runs = 0;   // lengths stored (longer runs split)
-  std::uint64_t large = 0;  // run deltas that escape to 8 bytes
-};
+// Whether record i starts a new run: its zig-zag delta z from record i - 1 is not 0, or the run
+// so far (`length` records) is as long as one run can be.
+inline bool starts_run(std::uint64_t z, std::uint64_t length) { return z != 0 || length == kLongestRun; }
 
-template <typename Get>
-RunCount count_runs(std::size_t n, Get get) {
-  RunCount count;
-  std::uint64_t length = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const bool starts = i == 0 || get(i) != get(i - 1) || length == kLongestRun;
-    if (starts) {
-      ++count.runs;
-      count.large += i > 0 && zigzag(get(i) - get(i - 1)) >= 0xFF;
-      length = 0;
-    }
-    ++length;
+// One zig-zag delta of modes 0x81 and 0x82: a byte, or 0xFF and the delta's 8 bytes at `exceptions`.
+inline void put_escapable(char*& bytes, char*& exceptions, std::uint64_t z) {
+  if (z < 0xFF) {
+    *bytes++ = static_cast<char>(z);
+    return;
   }
-  return count;
+  *bytes++ = static_cast<char>(0xFF);
+  std::memcpy(exceptions, &z, 8);
+  exceptions += 8;
 }
 
 // Mode kRuns: u32 runs | u32 escaped deltas | the runs' lengths (1 byte each, 1..255) | the deltas
@@ -64,32 +58,28 @@ RunCount count_runs(std::size_t n, Get get) {
 // bytes each). The first run's value is the column's first value. Fields that hold still for
 // several records (the mip level of a bilinear footprint, a fragment's pixel and triangle over
 // its texels) cost two bytes a run instead of one a record, and zstd has half as much to produce.
+// `runs` and `large` are put_column's counts (n >= 2).
 template <typename Get>
-void put_runs(std::string& out, std::size_t n, Get get, const RunCount& count) {
+void put_runs(std::string& out, std::size_t n, Get get, std::uint64_t runs, std::uint64_t large) {
   out.push_back(static_cast<char>(kRuns));
   put<std::uint64_t>(out, get(0));
-  put<std::uint32_t>(out, static_cast<std::uint32_t>(count.runs));
-  put<std::uint32_t>(out, static_cast<std::uint32_t>(count.large));
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(runs));
+  put<std::uint32_t>(out, static_cast<std::uint32_t>(large));
   const std::size_t start = out.size();
-  out.resize(start + count.runs + (count.runs - 1) + 8 * count.large);
+  out.resize(start + runs + (runs - 1) + 8 * large);
   char* lengths = out.data() + start;
-  char* deltas = lengths + count.runs;
-  char* exceptions = deltas + (count.runs - 1);
-  std::uint64_t length = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const bool starts = i == 0 || get(i) != get(i - 1) || length == kLongestRun;
-    if (starts && i > 0) {
-      *lengths++ = static_cast<char>(length);
-      const std::uint64_t z = zigzag(get(i) - get(i - 1));
-      if (z < 0xFF) {
-        *deltas++ = static_cast<char>(z);
-      } else {
-        *deltas++ = static_cast<char>(0xFF);
-        std::memcpy(exceptions, &z, 8);
-        exceptions += 8;
-      }
+  char* deltas = lengths + runs;
+  char* exceptions = deltas + (runs - 1);
+  std::uint64_t length = 1;
+  for (std::size_t i = 1; i < n; ++i) {
+    const std::uint64_t z = zigzag(get(i) - get(i - 1));
+    if (!starts_run(z, length)) {
+      ++length;
+      continue;
     }
-    length = starts ? 1 : length + 1;
+    *lengths++ = static_cast<char>(length);
+    put_escapable(deltas, exceptions, z);
+    length = 1;
   }
   *lengths = static_cast<char>(length);
 }
@@ -100,11 +90,20 @@ void put_runs(std::string& out, std::size_t n, Get get, const RunCount& count) {
 // runs of equal values (trace version 4 on).
 template <typename Get>
 void put_column(std::string& out, std::size_t n, Get get) {
-  std::uint64_t widest = 0, large = 0;
+  // One pass counts for every mode: the widest delta and the escapes of the delta modes, and the
+  // runs (longer ones split) with their escaped deltas.
+  std::uint64_t widest = 0, large = 0, runs = 1, runs_large = 0, length = 1;
   for (std::size_t i = 1; i < n; ++i) {
     const std::uint64_t z = zigzag(get(i) - get(i - 1));
     widest |= z;
     large += z >= 0xFF;
+    if (starts_run(z, length)) {
+      ++runs;
+      runs_large += z >= 0xFF;
+      length = 1;
+    } else {
+      ++length;
+    }
   }
   const std::uint8_t width = widest == 0               ? 0
                              : widest < 0x100          ? 1
@@ -113,15 +112,12 @@ void put_column(std::string& out, std::size_t n, Get get) {
                                                        : 8;
   const std::uint64_t deltas = n ? n - 1 : 0;
   const bool escaped = width > 1 && deltas + 4 + 8 * large < deltas * width;
-  if (width != 0) {
-    // Runs only where they average 4 records or more: shorter ones save zstd little and cost the
-    // decoder a run's overhead every record or two.
-    const RunCount runs = count_runs(n, get);
-    const std::uint64_t plain = escaped ? deltas + 4 + 8 * large : deltas * width;
-    if (runs.runs * kShortestAverageRun <= n && 8 + 2 * runs.runs - 1 + 8 * runs.large < plain) {
-      put_runs(out, n, get, runs);
-      return;
-    }
+  // Runs only where they average 4 records or more: shorter ones save zstd little and cost the
+  // decoder a run's overhead every record or two.
+  const std::uint64_t plain = escaped ? deltas + 4 + 8 * large : deltas * width;
+  if (width != 0 && runs * kShortestAverageRun <= n && 8 + 2 * runs - 1 + 8 * runs_large < plain) {
+    put_runs(out, n, get, runs, runs_large);
+    return;
   }
   out.push_back(static_cast<char>(escaped ? kEscapedBytes : width));
   put<std::uint64_t>(out, n ? get(0) : 0);
@@ -132,16 +128,7 @@ void put_column(std::string& out, std::size_t n, Get get) {
     out.resize(start + deltas + 8 * large);
     char* bytes = out.data() + start;
     char* exceptions = bytes + deltas;
-    for (std::size_t i = 1; i < n; ++i) {
-      const std::uint64_t z = zigzag(get(i) - get(i - 1));
-      if (z < 0xFF) {
-        bytes[i - 1] = static_cast<char>(z);
-      } else {
-        bytes[i - 1] = static_cast<char>(0xFF);
-        std::memcpy(exceptions, &z, 8);
-        exceptions += 8;
-      }
-    }
+    for (std::size_t i = 1; i < n; ++i) put_escapable(bytes, exceptions, zigzag(get(i) - get(i - 1)));
     return;
   }
   const std::size_t start = out.size();
