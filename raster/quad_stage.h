@@ -10,12 +10,12 @@
 #include <cstdint>
 #include <vector>
 
-#include <glm/vec4.hpp>
-
 #include "raster/framebuffer.h"
 #include "raster/framebuffer_recorder.h"
+#include "raster/quad_sampler.h"
 #include "raster/rasterizer.h"
 #include "raster/sampler.h"
+#include "raster/simd.h"
 #include "raster/texel_recorder.h"
 #include "raster/traversal.h"
 #include "raster/triangle_setup.h"
@@ -69,20 +69,19 @@ struct QuadStage {
 template <bool kTextured, bool kDebug>
 inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, int qx, int qy,
                             const std::int64_t* e) {
+  using simd::f32x4;
+  using simd::i64x4;
+  using simd::splat;
   const int width = framebuffer.width(), height = framebuffer.height();
-  // Pixels of a quad: 0 top-left, 1 top-right, 2 bottom-left, 3 bottom-right.
-  unsigned mask = 0;
-  std::int64_t pe[3][4];
-  for (int k = 0; k < 3; ++k) {
-    pe[k][0] = e[k];
-    pe[k][1] = e[k] + s.step_x[k];
-    pe[k][2] = e[k] + s.step_y[k];
-    pe[k][3] = e[k] + s.step_x[k] + s.step_y[k];
-  }
-  for (int i = 0; i < 4; ++i) {
-    const bool inside = (pe[0][i] + s.bias[0] >= 0) & (pe[1][i] + s.bias[1] >= 0) & (pe[2][i] + s.bias[2] >= 0);
-    mask |= static_cast<unsigned>(inside) << i;
-  }
+  // Pixels of a quad, one lane each: 0 top-left, 1 top-right, 2 bottom-left, 3 bottom-right.
+  i64x4 pe[3];
+  for (int k = 0; k < 3; ++k)
+    pe[k] = i64x4{e[k], e[k], e[k], e[k]} + i64x4{0, s.step_x[k], s.step_y[k], s.step_x[k] + s.step_y[k]};
+  // Inside: every biased edge function >= 0, that is their bitwise or >= 0.
+  const i64x4 bias0 = i64x4{s.bias[0], s.bias[0], s.bias[0], s.bias[0]};
+  const i64x4 bias1 = i64x4{s.bias[1], s.bias[1], s.bias[1], s.bias[1]};
+  const i64x4 bias2 = i64x4{s.bias[2], s.bias[2], s.bias[2], s.bias[2]};
+  unsigned mask = simd::non_negative_mask((pe[0] + bias0) | (pe[1] + bias1) | (pe[2] + bias2));
   if (qx + 1 >= width) mask &= ~0xAu;
   if (qy + 1 >= height) mask &= ~0xCu;
   if constexpr (kDebug) {
@@ -112,18 +111,14 @@ inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, 
   stats.fragments += covered;
 
   // Barycentric weights of vertices 1 and 2 at the four centres (helper pixels included).
-  float l1[4], l2[4];
-  for (int i = 0; i < 4; ++i) {
-    l1[i] = static_cast<float>(pe[1][i]) * s.inv_area;
-    l2[i] = static_cast<float>(pe[2][i]) * s.inv_area;
-  }
-  auto attribute = [&](int i, int j) { return s.base[j] + l1[i] * s.d1[j] + l2[i] * s.d2[j]; };
+  const f32x4 l1 = simd::to_float(pe[1]) * splat(s.inv_area);
+  const f32x4 l2 = simd::to_float(pe[2]) * splat(s.inv_area);
+  auto attribute = [&](int j) { return splat(s.base[j]) + l1 * splat(s.d1[j]) + l2 * splat(s.d2[j]); };
   auto pixel = [&](int i) {
     return static_cast<std::size_t>(qy + (i >> 1)) * width + static_cast<std::size_t>(qx + (i & 1));
   };
   float* depth = framebuffer.depth();
-  float z[4];
-  for (int i = 0; i < 4; ++i) z[i] = attribute(i, 7);
+  const f32x4 z = attribute(7);
   // Hierarchical Z: no covered fragment can pass if none is nearer than the farthest depth of
   // the quad's 8x8 tile; the quad is rejected without reading the depth buffer.
   const std::size_t tile = hiz ? hiz->tile_of(qx, qy) : 0;
@@ -153,35 +148,24 @@ inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, 
     if (!pass) return;
   }
   const unsigned shade = late ? mask : pass;
-  float q[4];
-  for (int i = 0; i < 4; ++i) q[i] = attribute(i, 0);
-
-  float u[4], v[4];
-  float lambda = 0.0f;
-  const Texture* texture = state.texture;
+  stats.fragments_shaded += static_cast<unsigned>(std::popcount(shade));
+  // Perspective correction: every attribute but q and z is interpolated divided by w.
+  const f32x4 w = splat(1.0f) / attribute(0);
+  const f32x4 red = attribute(3) * w, green = attribute(4) * w, blue = attribute(5) * w, alpha = attribute(6) * w;
+  f32x4 shaded[4];  // per pixel, channels in lanes
+  for (int i = 0; i < 4; ++i) shaded[i] = f32x4{red[i], green[i], blue[i], alpha[i]};
   if constexpr (kTextured) {
-    for (int i = 0; i < 4; ++i) {
-      const float w = 1.0f / q[i];
-      u[i] = attribute(i, 1) * w;
-      v[i] = attribute(i, 2) * w;
-    }
-    lambda = compute_lod(options.sampler, texture->levels[0].width, texture->levels[0].height, u[1] - u[0],
-                         v[1] - v[0], u[2] - u[0], v[2] - v[0]);
-  }
-  glm::vec4 shaded[4] = {};
-  TexelSite site;
-  site.texture = state.texture_id;
-  site.triangle = state.triangle;
-  for (int i = 0; i < 4; ++i) {
-    if (!(shade >> i & 1u)) continue;
-    ++stats.fragments_shaded;
-    const float w = 1.0f / q[i];
-    shaded[i] = glm::vec4(attribute(i, 3) * w, attribute(i, 4) * w, attribute(i, 5) * w, attribute(i, 6) * w);
-    if constexpr (kTextured) {
-      site.pixel_x = static_cast<std::uint16_t>(qx + (i & 1));
-      site.pixel_y = static_cast<std::uint16_t>(qy + (i >> 1));
-      shaded[i] *= sample_texture(*texture, options.sampler, u[i], v[i], lambda, texels, site);
-    }
+    const f32x4 u = attribute(1) * w, v = attribute(2) * w;
+    const Texture* texture = state.texture;
+    const float lambda = compute_lod(options.sampler, texture->levels[0].width, texture->levels[0].height,
+                                     u[1] - u[0], v[1] - v[0], u[2] - u[0], v[2] - v[0]);
+    TexelSite site;
+    site.texture = state.texture_id;
+    site.triangle = state.triangle;
+    f32x4 texel_colour[4];
+    sample_quad(*texture, options.sampler, u, v, lambda, shade, qx, qy, texels, site, texel_colour);
+    for (int i = 0; i < 4; ++i)
+      if (shade >> i & 1u) shaded[i] *= texel_colour[i];
   }
   if (late) pass = depth_test();
   if (!pass) return;
@@ -189,15 +173,15 @@ inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, 
   framebuffer_events.record(FramebufferOp::ColourWrite, qx, qy, pass, state.triangle);
   bool tile_maximum_written = false;
   std::uint8_t* colour = framebuffer.colour();
+  stats.fragments_passed += static_cast<unsigned>(std::popcount(pass));
   for (int i = 0; i < 4; ++i) {
     if (!(pass >> i & 1u)) continue;
-    ++stats.fragments_passed;
     const std::size_t p = pixel(i);
     if (hiz && depth[p] >= hiz->farthest(tile)) tile_maximum_written = true;
     depth[p] = z[i];
+    const simd::i32x4 bytes = simd::truncate(simd::clamp(shaded[i], 0.0f, 1.0f) * splat(255.0f) + splat(0.5f));
     std::uint8_t* out = colour + p * 4;
-    for (int ch = 0; ch < 4; ++ch)
-      out[ch] = static_cast<std::uint8_t>(std::clamp(shaded[i][ch], 0.0f, 1.0f) * 255.0f + 0.5f);
+    for (int ch = 0; ch < 4; ++ch) out[ch] = static_cast<std::uint8_t>(bytes[ch]);
     if constexpr (kDebug) ++framebuffer.write_count()[p];
   }
   if (tile_maximum_written) hiz->refresh(framebuffer, tile);

@@ -63,12 +63,9 @@ inline int wrap_coordinate(int i, int size, TextureWrap wrap) {
   return std::clamp(i, 0, size - 1);
 }
 
-// Texture coordinates as the sampler may scale them: finite, and small enough that
-// s * 16384 fits an int. REPEAT only needs s modulo 1, which a float beyond +-2^16 has lost
-// anyway, and CLAMP_TO_EDGE clamps such values to the edge texel either way.
 inline float safe_coordinate(float s) {
   if (!std::isfinite(s)) return 0.0f;
-  return std::clamp(s, -65536.0f, 65536.0f);
+  return std::clamp(s, -kCoordinateLimit, kCoordinateLimit);
 }
 
 // floor() for |u| < 2^31 without a library call (the coordinates are clamped well inside).
@@ -120,42 +117,55 @@ inline glm::vec4 sample_level(const Texture& texture, unsigned level, TextureFil
 
 }  // namespace
 
-glm::vec4 sample_texture(const Texture& texture, const SamplerState& state, float s, float t, float lambda,
-                         TexelRecorder& recorder, const TexelSite& site) {
-  s = safe_coordinate(s);
-  t = safe_coordinate(t);
+LevelPlan plan_levels(const Texture& texture, const SamplerState& state, float lambda) {
+  LevelPlan plan;
   // Section 8.14: c = 0.5 only for a LINEAR magnification with a NEAREST_MIPMAP_* minification.
   const float c = (state.mag_filter == TextureFilter::Linear && state.min_filter == TextureFilter::NearestMipmapNearest)
                       ? 0.5f
                       : 0.0f;
-  if (lambda <= c) return sample_level(texture, 0, state.mag_filter, state, s, t, recorder, site);
-
+  if (lambda <= c) {
+    plan.filter = state.mag_filter;
+    return plan;
+  }
   const unsigned q = static_cast<unsigned>(texture.levels.size()) - 1;  // the last level
   switch (state.min_filter) {
     case TextureFilter::Nearest:
     case TextureFilter::Linear:
-      return sample_level(texture, 0, state.min_filter, state, s, t, recorder, site);
+      plan.filter = state.min_filter;
+      return plan;
     case TextureFilter::NearestMipmapNearest:
-    case TextureFilter::LinearMipmapNearest: {
+    case TextureFilter::LinearMipmapNearest:
       // Equation 8.10: d = ceil(lambda + 1/2) - 1 for lambda > 1/2, else the base level.
-      unsigned d = 0;
-      if (lambda > 0.5f) d = static_cast<unsigned>(std::min(std::ceil(lambda + 0.5f) - 1.0f, static_cast<float>(q)));
-      const TextureFilter filter =
+      if (lambda > 0.5f)
+        plan.first = static_cast<unsigned>(std::min(std::ceil(lambda + 0.5f) - 1.0f, static_cast<float>(q)));
+      plan.filter =
           state.min_filter == TextureFilter::NearestMipmapNearest ? TextureFilter::Nearest : TextureFilter::Linear;
-      return sample_level(texture, d, filter, state, s, t, recorder, site);
-    }
+      return plan;
     case TextureFilter::LinearMipmapLinear: {
-      if (lambda >= static_cast<float>(q))
-        return sample_level(texture, q, TextureFilter::Linear, state, s, t, recorder, site);
+      plan.filter = TextureFilter::Linear;
+      if (lambda >= static_cast<float>(q)) {
+        plan.first = q;
+        return plan;
+      }
       const float floor_lambda = std::floor(lambda);
-      const unsigned d1 = static_cast<unsigned>(floor_lambda);
-      const float f = lambda - floor_lambda;
-      const glm::vec4 t1 = sample_level(texture, d1, TextureFilter::Linear, state, s, t, recorder, site);
-      const glm::vec4 t2 = sample_level(texture, d1 + 1, TextureFilter::Linear, state, s, t, recorder, site);
-      return t1 + (t2 - t1) * f;
+      plan.first = static_cast<unsigned>(floor_lambda);
+      plan.blend = true;
+      plan.fraction = lambda - floor_lambda;
+      return plan;
     }
   }
-  return glm::vec4(0.0f);
+  return plan;
+}
+
+glm::vec4 sample_texture(const Texture& texture, const SamplerState& state, float s, float t, float lambda,
+                         TexelRecorder& recorder, const TexelSite& site) {
+  s = safe_coordinate(s);
+  t = safe_coordinate(t);
+  const LevelPlan plan = plan_levels(texture, state, lambda);
+  const glm::vec4 t1 = sample_level(texture, plan.first, plan.filter, state, s, t, recorder, site);
+  if (!plan.blend) return t1;
+  const glm::vec4 t2 = sample_level(texture, plan.first + 1, TextureFilter::Linear, state, s, t, recorder, site);
+  return t1 + (t2 - t1) * plan.fraction;
 }
 
 }  // namespace rastrace

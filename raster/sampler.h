@@ -56,6 +56,23 @@ const char* to_string(TextureWrap wrap);
 // the level-0 size scales them to texels. Returns -inf-safe values (rho = 0 gives -128).
 float compute_lod(const SamplerState& state, int width, int height, float dsdx, float dtdx, float dsdy, float dtdy);
 
+// The levels a sample with level of detail lambda reads (section 8.14): one level with the
+// filter within it, or, for LINEAR_MIPMAP_LINEAR between two levels, `first` and `first + 1`
+// (LINEAR within each) mixed by `fraction`. The same for every pixel of a quad, whose lambda is
+// shared.
+struct LevelPlan {
+  unsigned first = 0;
+  TextureFilter filter = TextureFilter::Linear;  // Nearest or Linear
+  bool blend = false;
+  float fraction = 0.0f;
+};
+LevelPlan plan_levels(const Texture& texture, const SamplerState& state, float lambda);
+
+// Texture coordinates as the sampler may scale them: 0 where not finite, and clamped to +-2^16 so
+// that s * 16384 fits an int. REPEAT only needs s modulo 1, which a float beyond +-2^16 has lost
+// anyway, and CLAMP_TO_EDGE clamps such values to the edge texel either way.
+inline constexpr float kCoordinateLimit = 65536.0f;
+
 // Samples `texture` at (s, t) with level of detail lambda, recording every texel read.
 // `texture_id` and the pixel and triangle in `site` go into the TexelAccess events.
 glm::vec4 sample_texture(const Texture& texture, const SamplerState& state, float s, float t, float lambda,
