@@ -63,25 +63,19 @@ struct QuadStage {
   RasterStats& stats;
 
   template <bool kTextured, bool kDebug>
-  void quad(const TriangleSetup& s, const TriangleState& state, int qx, int qy, const std::int64_t* e);
+  void quad(const TriangleSetup& s, const TriangleState& state, int qx, int qy, const simd::i64x4* pe);
 };
 
 template <bool kTextured, bool kDebug>
 inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, int qx, int qy,
-                            const std::int64_t* e) {
+                            const simd::i64x4* pe) {
   using simd::f32x4;
-  using simd::i64x4;
   using simd::splat;
   const int width = framebuffer.width(), height = framebuffer.height();
-  // Pixels of a quad, one lane each: 0 top-left, 1 top-right, 2 bottom-left, 3 bottom-right.
-  i64x4 pe[3];
-  for (int k = 0; k < 3; ++k)
-    pe[k] = i64x4{e[k], e[k], e[k], e[k]} + i64x4{0, s.step_x[k], s.step_y[k], s.step_x[k] + s.step_y[k]};
-  // Inside: every biased edge function >= 0, that is their bitwise or >= 0.
-  const i64x4 bias0 = i64x4{s.bias[0], s.bias[0], s.bias[0], s.bias[0]};
-  const i64x4 bias1 = i64x4{s.bias[1], s.bias[1], s.bias[1], s.bias[1]};
-  const i64x4 bias2 = i64x4{s.bias[2], s.bias[2], s.bias[2], s.bias[2]};
-  unsigned mask = simd::non_negative_mask((pe[0] + bias0) | (pe[1] + bias1) | (pe[2] + bias2));
+  // pe[k]: edge function k at the pixels of the quad, one lane each: 0 top-left, 1 top-right,
+  // 2 bottom-left, 3 bottom-right. Inside: every biased edge function >= 0, that is, their
+  // bitwise or >= 0.
+  unsigned mask = simd::non_negative_mask((pe[0] + s.bias[0]) | (pe[1] + s.bias[1]) | (pe[2] + s.bias[2]));
   if (qx + 1 >= width) mask &= ~0xAu;
   if (qy + 1 >= height) mask &= ~0xCu;
   if constexpr (kDebug) {

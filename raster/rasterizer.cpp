@@ -100,7 +100,7 @@ void Rasterizer::traverse(const TriangleSetup& s, const TriangleState& state) {
   const PixelRect image{0, 0, framebuffer_.width() - 1, framebuffer_.height() - 1};
   for_each_quad<kDebug>(
       s, options_.traversal, image,
-      [&](int qx, int qy, const std::int64_t* e) { stage.quad<kTextured, kDebug>(s, state, qx, qy, e); },
+      [&](int qx, int qy, const simd::i64x4* e) { stage.quad<kTextured, kDebug>(s, state, qx, qy, e); },
       hilbert_bits_);
 }
 

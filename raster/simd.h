@@ -6,7 +6,8 @@
 // Every operation here is lane-wise and the same IEEE operation the scalar code performs on one
 // value, in the same order: the vector code gives the scalar code's results bit for bit (the
 // build does not contract a*b+c into fused multiply-adds: C++20 without GNU extensions, and
-// baseline x86-64 has no FMA).
+// baseline x86-64 has no FMA). A scalar operand of a binary operation is broadcast to every lane.
+// No function here returns a 64-bit-lane vector: without AVX that return would change the ABI.
 #pragma once
 
 #include <cstdint>

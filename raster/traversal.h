@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "raster/hilbert_order.h"
+#include "raster/simd.h"
 #include "raster/triangle_setup.h"
 
 namespace rastrace {
@@ -61,27 +62,42 @@ inline std::uint32_t quad_order_key(Traversal traversal, int qx, int qy, unsigne
 }
 
 // Calls visit(qx, qy, e) for every quad of the triangle's box inside `clip`, in the traversal's
-// order; e[k] is edge function k at the quad's top-left pixel centre. Tiled8 skips 8x8 tiles that
-// one edge excludes entirely, unless kVisitAll (the debug planes look at every quad). Hilbert8
-// visits the same tiles as Tiled8 along the screen's curve of order `hilbert_bits`.
+// order; e[k] holds edge function k at the quad's four pixel centres (lanes: top-left, top-right,
+// bottom-left, bottom-right), stepped from quad to quad by vector additions. Tiled8 skips 8x8
+// tiles that one edge excludes entirely, unless kVisitAll (the debug planes look at every quad).
+// Hilbert8 visits the same tiles as Tiled8 along the screen's curve of order `hilbert_bits`.
 template <bool kVisitAll, typename Visit>
 void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect& clip, Visit&& visit,
                    unsigned hilbert_bits = 0) {
+  using simd::i64x4;
   const int x_begin = std::max(s.x0, clip.x0), y_begin = std::max(s.y0, clip.y0);
   const int x_end = std::min(s.x1, clip.x1), y_end = std::min(s.y1, clip.y1);
   if (x_begin > x_end || y_begin > y_end) return;
-  std::int64_t row[3];
-  for (int k = 0; k < 3; ++k)
-    row[k] = s.origin[k] + s.step_x[k] * (x_begin - s.x0) + s.step_y[k] * (y_begin - s.y0);
-  if (traversal == Traversal::Scanline) {
-    for (int qy = y_begin; qy <= y_end; qy += 2) {
-      std::int64_t e[3] = {row[0], row[1], row[2]};
-      for (int qx = x_begin; qx <= x_end; qx += 2) {
-        visit(qx, qy, static_cast<const std::int64_t*>(e));
-        for (int k = 0; k < 3; ++k) e[k] += 2 * s.step_x[k];
+  // Per edge: the four pixels relative to the quad's top-left one, and the steps between quads.
+  i64x4 pixel_offsets[3], quad_step_x[3], quad_step_y[3];
+  for (int k = 0; k < 3; ++k) {
+    pixel_offsets[k] = i64x4{0, s.step_x[k], s.step_y[k], s.step_x[k] + s.step_y[k]};
+    quad_step_x[k] = i64x4{} + 2 * s.step_x[k];
+    quad_step_y[k] = i64x4{} + 2 * s.step_y[k];
+  }
+  // The quads of the rectangle whose top-left quad has edge functions `first`, row-major.
+  const auto quads_of_rectangle = [&](int x0, int y0, int x1, int y1, const std::int64_t* first) {
+    i64x4 row[3];
+    for (int k = 0; k < 3; ++k) row[k] = pixel_offsets[k] + first[k];
+    for (int qy = y0; qy <= y1; qy += 2) {
+      i64x4 e[3] = {row[0], row[1], row[2]};
+      for (int qx = x0; qx <= x1; qx += 2) {
+        visit(qx, qy, static_cast<const i64x4*>(e));
+        for (int k = 0; k < 3; ++k) e[k] += quad_step_x[k];
       }
-      for (int k = 0; k < 3; ++k) row[k] += 2 * s.step_y[k];
+      for (int k = 0; k < 3; ++k) row[k] += quad_step_y[k];
     }
+  };
+  std::int64_t corner[3];
+  for (int k = 0; k < 3; ++k)
+    corner[k] = s.origin[k] + s.step_x[k] * (x_begin - s.x0) + s.step_y[k] * (y_begin - s.y0);
+  if (traversal == Traversal::Scanline) {
+    quads_of_rectangle(x_begin, y_begin, x_end, y_end, corner);
     return;
   }
   // Tiled: skip a tile when one edge function is negative at all its pixel centres; the
@@ -91,17 +107,9 @@ void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect&
   for (int k = 0; k < 3; ++k)
     tile_max[k] =
         std::max<std::int64_t>(0, s.step_x[k]) * (kTile - 1) + std::max<std::int64_t>(0, s.step_y[k]) * (kTile - 1);
-  // The quads of one tile inside the clip, row-major; `tile` holds the edge functions at its top-left pixel.
+  // The quads of one tile inside the clip; `tile` holds the edge functions at its top-left pixel.
   const auto quads_of_tile = [&](int tx, int ty, const std::int64_t* tile) {
-    std::int64_t quad_row[3] = {tile[0], tile[1], tile[2]};
-    for (int qy = ty; qy < ty + kTile && qy <= y_end; qy += 2) {
-      std::int64_t e[3] = {quad_row[0], quad_row[1], quad_row[2]};
-      for (int qx = tx; qx < tx + kTile && qx <= x_end; qx += 2) {
-        visit(qx, qy, static_cast<const std::int64_t*>(e));
-        for (int k = 0; k < 3; ++k) e[k] += 2 * s.step_x[k];
-      }
-      for (int k = 0; k < 3; ++k) quad_row[k] += 2 * s.step_y[k];
-    }
+    quads_of_rectangle(tx, ty, std::min(tx + kTile - 2, x_end), std::min(ty + kTile - 2, y_end), tile);
   };
   if (traversal == Traversal::Hilbert8) {
     thread_local std::vector<std::uint64_t> tiles;  // reused: allocates only when a triangle is bigger
@@ -119,14 +127,14 @@ void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect&
     return;
   }
   for (int ty = y_begin; ty <= y_end; ty += kTile) {
-    std::int64_t tile[3] = {row[0], row[1], row[2]};
+    std::int64_t tile[3] = {corner[0], corner[1], corner[2]};
     for (int tx = x_begin; tx <= x_end; tx += kTile) {
       const bool outside = tile[0] + tile_max[0] + s.bias[0] < 0 || tile[1] + tile_max[1] + s.bias[1] < 0 ||
                            tile[2] + tile_max[2] + s.bias[2] < 0;
       if (!outside || kVisitAll) quads_of_tile(tx, ty, tile);
       for (int k = 0; k < 3; ++k) tile[k] += kTile * s.step_x[k];
     }
-    for (int k = 0; k < 3; ++k) row[k] += kTile * s.step_y[k];
+    for (int k = 0; k < 3; ++k) corner[k] += kTile * s.step_y[k];
   }
 }
 
