@@ -1,0 +1,163 @@
+// The SIMD kernels of texel decoding (traces/texel_lanes.h): interleaved records are byte for
+// byte the portable ones; byte-delta prefix sums equal a 64-bit running value's low 32 bits and
+// find every step out of [0, 2^32); through the decoder, a column leaving its range by 1-byte
+// steps is an error whichever path decoded it, and a column crossing 2^31 is not.
+#include <algorithm>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "traces/chunk_codec.h"
+#include "traces/texel_lanes.h"
+
+namespace rastrace {
+namespace {
+
+struct Random {
+  std::uint64_t state;
+  std::uint64_t next() {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return state >> 17;
+  }
+};
+
+TEST(TexelLanes, InterleavedRecordsAreTheFieldsTruncatedToTheirWidthsWithZeroPadding) {
+  Random random{11};
+  for (const bool details : {true, false}) {
+    for (std::size_t count = 0; count <= 41; ++count) {
+      std::vector<std::uint32_t> lane[7];
+      for (auto& l : lane)
+        for (std::size_t i = 0; i < count; ++i) l.push_back(static_cast<std::uint32_t>(random.next()));
+      const TexelLanes lanes{lane[0].data(), lane[1].data(), lane[2].data(), lane[3].data(),
+                             details ? lane[4].data() : nullptr, details ? lane[5].data() : nullptr,
+                             details ? lane[6].data() : nullptr};
+      // Garbage first: every byte, padding included, must be written.
+      std::vector<TexelAccess> fast(count), portable(count);
+      std::memset(static_cast<void*>(fast.data()), 0xA5, count * sizeof(TexelAccess));
+      std::memset(static_cast<void*>(portable.data()), 0x5A, count * sizeof(TexelAccess));
+      interleave_texels(lanes, count, fast.data());
+      interleave_texels_portable(lanes, count, portable.data());
+      ASSERT_EQ(std::memcmp(fast.data(), portable.data(), count * sizeof(TexelAccess)), 0) << count;
+      for (std::size_t i = 0; i < count; ++i) {
+        const TexelAccess& t = fast[i];
+        ASSERT_EQ(t.texture, lane[0][i]);
+        ASSERT_EQ(t.level, lane[1][i] & 0xFF);
+        ASSERT_EQ(t.x, lane[2][i]);
+        ASSERT_EQ(t.y, lane[3][i]);
+        ASSERT_EQ(t.pixel_x, details ? lane[4][i] & 0xFFFF : 0u);
+        ASSERT_EQ(t.pixel_y, details ? lane[5][i] & 0xFFFF : 0u);
+        ASSERT_EQ(t.triangle, details ? lane[6][i] : 0u);
+        const unsigned char* bytes = reinterpret_cast<const unsigned char*>(&t);
+        ASSERT_EQ(bytes[5] | bytes[6] | bytes[7], 0) << "padding of record " << i;
+      }
+    }
+  }
+}
+
+// zig-zag, as the column coding stores a delta
+std::uint8_t zigzag(int delta) { return static_cast<std::uint8_t>(delta >= 0 ? 2 * delta : -2 * delta - 1); }
+
+TEST(TexelLanes, ByteDeltaSumsAreTheLow32BitsOfTheRunningValueAndFindEveryStepOutOf32Bits) {
+  Random random{5};
+  // Starts near 0 (steps below it), near 2^31 (crossing it is in range), near 2^32 (above it).
+  for (const std::uint64_t start : {3ull, 0x7FFFFF80ull, 0xFFFFFF00ull, 0x12345678ull}) {
+    for (int trial = 0; trial < 50; ++trial) {
+      const std::size_t count = 8 + random.next() % 120;
+      const int drift = static_cast<int>(random.next() % 5) - 2;  // -2..2: values wander up or down
+      std::vector<std::uint8_t> deltas(count + 8);
+      for (std::size_t i = 0; i < count; ++i)
+        deltas[i] = zigzag(std::clamp(static_cast<int>(random.next() % 256) - 128 + drift * 40, -128, 127));
+      std::vector<std::uint32_t> lane(count, 0);
+      ByteDeltaSums sums{static_cast<std::uint32_t>(start)};
+      const std::size_t done = add_byte_deltas(deltas.data(), count, false, sums, lane.data());
+      ASSERT_EQ(done % 8, 0u);
+      ASSERT_LE(done, count);
+      if (done == 0) GTEST_SKIP() << "no AVX2 on this machine: the scalar decoder does the work";
+      ASSERT_GT(done + 8, count);  // every whole group of eight
+      std::uint64_t value = start, ored = 0;
+      bool out = false;
+      for (std::size_t i = 0; i < done; ++i) {
+        const int d = (deltas[i] & 1) ? -(deltas[i] >> 1) - 1 : deltas[i] >> 1;
+        value += static_cast<std::uint64_t>(static_cast<std::int64_t>(d));
+        out |= value > 0xFFFFFFFFull;
+        ored |= value & 0xFFFFFFFFull;
+        ASSERT_EQ(lane[i], static_cast<std::uint32_t>(value)) << "record " << i << " from " << start;
+      }
+      EXPECT_EQ(sums.value, static_cast<std::uint32_t>(value));
+      EXPECT_EQ(sums.left_32_bits, out) << "from " << start << ", trial " << trial;
+      if (!out) {
+        EXPECT_EQ(sums.ored, ored);
+      }
+    }
+  }
+}
+
+TEST(TexelLanes, ByteDeltaSumsStopAtTheFirstGroupOfEightHoldingAnEscape) {
+  std::vector<std::uint8_t> deltas(40, zigzag(1));
+  deltas[21] = 0xFF;  // in the third group of eight
+  std::vector<std::uint32_t> lane(40);
+  ByteDeltaSums sums{100};
+  const std::size_t done = add_byte_deltas(deltas.data(), 40, true, sums, lane.data());
+  if (done == 0) GTEST_SKIP() << "no AVX2 on this machine";
+  EXPECT_EQ(done, 16u);
+  EXPECT_EQ(sums.value, 116u);
+  EXPECT_EQ(lane[15], 116u);
+  // Without escapes (mode 1) 0xFF is the delta -128.
+  ByteDeltaSums plain{1000};
+  EXPECT_EQ(add_byte_deltas(deltas.data(), 40, false, plain, lane.data()), 40u);
+  EXPECT_EQ(plain.value, 1000u + 39 - 128);
+}
+
+// A texel chunk's raw bytes: every column constant (mode 0) except `column`, which starts at
+// `first` and moves by `steps` (1-byte deltas, mode 1).
+std::string chunk_with_steps(int column, std::uint64_t first, const std::vector<int>& steps) {
+  std::string raw;
+  const auto put64 = [&](std::uint64_t v) { raw.append(reinterpret_cast<const char*>(&v), 8); };
+  for (int k = 0; k < 7; ++k) {
+    if (k != column) {
+      raw.push_back(0);
+      put64(k == 1 ? 2 : 9);
+      continue;
+    }
+    raw.push_back(1);
+    put64(first);
+    for (const int s : steps) raw.push_back(static_cast<char>(zigzag(s)));
+  }
+  return raw;
+}
+
+std::string decode(const std::string& raw, std::uint32_t n, std::vector<TexelAccess>& out) {
+  return decode_texel_records({reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size()}, n, out);
+}
+
+TEST(TexelLanes, AColumnLeavingItsRangeByByteStepsIsAnErrorWhereverItLeaves) {
+  std::vector<TexelAccess> out;
+  for (const std::size_t n : {5u, 20u, 700u}) {  // the scalar tail, SIMD groups, two blocks
+    for (std::size_t at = 1; at + 1 < n; at += n / 5 + 1) {
+      // x: down from `at` by 1, so the value crosses 0 at record at + 1, then back up above 0.
+      std::vector<int> down(n - 1, 0);
+      for (std::size_t i = 0; i + 1 < n; ++i) down[i] = i <= at ? -1 : (i < at + 4 ? 1 : 0);
+      EXPECT_EQ(decode(chunk_with_steps(2, at, down), static_cast<std::uint32_t>(n), out),
+                "a value in the x column is out of range")
+          << n << " records, crossing 0 after " << at;
+      // y: up to 2^32 - 1 at record `at`, then one more.
+      std::vector<int> up(n - 1, 0);
+      for (std::size_t i = 0; i + 1 < n; ++i) up[i] = i <= at ? 1 : 0;
+      EXPECT_EQ(decode(chunk_with_steps(3, 0xFFFFFFFFull - at, up), static_cast<std::uint32_t>(n), out),
+                "a value in the y column is out of range")
+          << n << " records, crossing 2^32 after " << at;
+      // level: above 255 (its limit) from record at + 1 on.
+      EXPECT_EQ(decode(chunk_with_steps(1, 255 - at, up), static_cast<std::uint32_t>(n), out),
+                "a value in the level column is out of range");
+      // triangle: crossing 2^31 is in range, and every value is exact.
+      ASSERT_EQ(decode(chunk_with_steps(6, 0x80000000ull - at, up), static_cast<std::uint32_t>(n), out), "");
+      for (std::size_t i = 0; i < n; ++i)
+        ASSERT_EQ(out[i].triangle, 0x80000000ull - at + std::min(i, at + 1)) << i;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rastrace
