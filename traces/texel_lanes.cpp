@@ -1,5 +1,6 @@
 #include "traces/texel_lanes.h"
 
+#include <atomic>
 #include <bit>
 #include <cstddef>
 #include <cstring>
@@ -129,9 +130,11 @@ __attribute__((target("avx2"))) std::size_t add_byte_deltas_avx2(const std::uint
   return i;
 }
 
+std::atomic<bool> g_simd{true};  // use_texel_lane_simd()
+
 bool has_avx2() {
   static const bool has = __builtin_cpu_supports("avx2");
-  return has;
+  return has && g_simd.load(std::memory_order_relaxed);
 }
 #endif
 
@@ -152,6 +155,14 @@ void interleave_texels(const TexelLanes& lanes, std::size_t count, TexelAccess* 
     if (has_avx2()) done = interleave_avx2(lanes, count, out);
 #endif
   interleave_words(lanes, done, count, out);
+}
+
+void use_texel_lane_simd(bool enabled) {
+#if RASTRACE_TEXEL_LANES_AVX2
+  g_simd.store(enabled, std::memory_order_relaxed);
+#else
+  (void)enabled;
+#endif
 }
 
 void interleave_texels_portable(const TexelLanes& lanes, std::size_t count, TexelAccess* out) {

@@ -53,4 +53,8 @@ void interleave_texels(const TexelLanes& lanes, std::size_t count, TexelAccess* 
 // The same without SIMD, whatever the machine (for tests comparing the two).
 void interleave_texels_portable(const TexelLanes& lanes, std::size_t count, TexelAccess* out);
 
+// False: both kernels take their portable paths from now on, as on a machine without AVX2 (for
+// tests of those paths on any machine; true, the default, uses AVX2 where there is one).
+void use_texel_lane_simd(bool enabled);
+
 }  // namespace rastrace

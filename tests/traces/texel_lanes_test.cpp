@@ -1,7 +1,8 @@
 // The SIMD kernels of texel decoding (traces/texel_lanes.h): interleaved records are byte for
 // byte the portable ones; byte-delta prefix sums equal a 64-bit running value's low 32 bits and
 // find every step out of [0, 2^32); through the decoder, a column leaving its range by 1-byte
-// steps is an error whichever path decoded it, and a column crossing 2^31 is not.
+// steps is an error, and a column crossing 2^31 is not; the portable paths (machines without
+// AVX2) decode a frame-like chunk, whole or damaged, to the same records and errors.
 #include <algorithm>
 #include <cstring>
 #include <string>
@@ -132,8 +133,8 @@ std::string chunk_with_steps(int column, std::uint64_t first, const std::vector<
   return raw;
 }
 
-std::string decode(const std::string& raw, std::uint32_t n, std::vector<TexelAccess>& out) {
-  return decode_texel_records({reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size()}, n, out);
+std::string decode(const std::string& raw, std::uint32_t n, std::vector<TexelAccess>& out, bool details = true) {
+  return decode_texel_records({reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size()}, n, out, details);
 }
 
 TEST(TexelLanes, AColumnLeavingItsRangeByByteStepsIsAnErrorWhereverItLeaves) {
@@ -159,6 +160,57 @@ TEST(TexelLanes, AColumnLeavingItsRangeByByteStepsIsAnErrorWhereverItLeaves) {
       ASSERT_EQ(decode(chunk_with_steps(6, 0x80000000ull - at, up), static_cast<std::uint32_t>(n), out), "");
       for (std::size_t i = 0; i < n; ++i)
         ASSERT_EQ(out[i].triangle, 0x80000000ull - at + std::min(i, at + 1)) << i;
+    }
+  }
+}
+
+// A rendered frame's texels in miniature: fragments of 8 texels (a 2x2 footprint on two levels)
+// walking a scanline of quads, the texel position jumping at times (escaped deltas), triangles
+// changing every few fragments.
+std::vector<TexelAccess> fragments(std::size_t count) {
+  Random random{3};
+  std::vector<TexelAccess> t;
+  std::uint32_t px = 0, py = 100, triangle = 7, u = 500, v = 20;
+  while (t.size() < count) {
+    if (random.next() % 5 == 0) ++triangle;
+    if (random.next() % 40 == 0) u = static_cast<std::uint32_t>(random.next() % 4096);  // escapes
+    px = (px + 1) % 1024;
+    u += static_cast<std::uint32_t>(random.next() % 3);
+    for (std::uint8_t level = 0; level < 2; ++level)
+      for (std::uint32_t k = 0; k < 4 && t.size() < count; ++k)
+        t.push_back({1, level, (u >> level) + (k & 1), (v >> level) + (k >> 1), static_cast<std::uint16_t>(px),
+                     static_cast<std::uint16_t>(py), triangle});
+  }
+  return t;
+}
+
+TEST(TexelLanes, ThePortablePathsDecodeTheSameRecordsAndErrorsAsTheSimdOnes) {
+  const std::vector<TexelAccess> texels = fragments(65536);
+  std::string raw;
+  encode_texel_records(texels, raw);
+  ASSERT_EQ(static_cast<std::uint8_t>(raw[9]), 0x82);  // the level column (after the texture's 9 bytes): runs
+  std::vector<TexelAccess> simd, portable;
+  for (const bool details : {true, false}) {
+    for (int damage = 0; damage < 40; ++damage) {
+      std::string bytes = raw;
+      if (damage > 0) bytes[(damage * 7919u) % bytes.size()] ^= static_cast<char>(1 << (damage % 8));
+      const std::string simd_error = decode(bytes, 65536, simd, details);
+      use_texel_lane_simd(false);
+      const std::string portable_error = decode(bytes, 65536, portable, details);
+      use_texel_lane_simd(true);
+      ASSERT_EQ(portable_error, simd_error) << "damage " << damage;
+      if (damage == 0) {
+        ASSERT_EQ(simd_error, "");
+      }
+      if (!simd_error.empty()) continue;
+      ASSERT_EQ(std::memcmp(simd.data(), portable.data(), simd.size() * sizeof(TexelAccess)), 0) << damage;
+      if (damage > 0 || !details) continue;
+      for (std::size_t i = 0; i < texels.size(); ++i) {
+        const TexelAccess &g = simd[i], &w = texels[i];
+        ASSERT_TRUE(g.texture == w.texture && g.level == w.level && g.x == w.x && g.y == w.y &&
+                    g.pixel_x == w.pixel_x && g.pixel_y == w.pixel_y && g.triangle == w.triangle)
+            << "record " << i;
+      }
     }
   }
 }
