@@ -16,9 +16,11 @@
 #include <zstd.h>
 
 #include "fuzz/fuzz_target.h"
+#include "core/error.h"
 #include "traces/crc32c.h"
 #include "traces/trace_format.h"
 #include "traces/trace_metadata.h"
+#include "traces/texel_lanes.h"
 #include "traces/trace_reader.h"
 
 namespace {
@@ -128,4 +130,26 @@ RASTRACE_FUZZ_TARGET(trace_chunk) {
         std::abort();
     }
   });
+  // The decoder's SIMD kernels (traces/texel_lanes.h) and their portable paths, taken on machines
+  // without AVX2: the same records or the same error.
+  std::string error[2];
+  std::vector<TexelAccess> decoded[2];
+  for (int portable = 0; portable < 2; ++portable) {
+    use_texel_lane_simd(portable == 0);
+    try {
+      TraceReader one(path);
+      one.set_read_ahead(false);
+      decoded[portable] = one.read_chunk(0).texels;
+    } catch (const InputError& e) {
+      error[portable] = e.what();
+    }
+  }
+  use_texel_lane_simd(true);
+  if (error[0] != error[1] || decoded[0].size() != decoded[1].size()) std::abort();
+  for (std::size_t i = 0; i < decoded[0].size(); ++i) {
+    const TexelAccess &a = decoded[0][i], &b = decoded[1][i];
+    if (a.texture != b.texture || a.level != b.level || a.x != b.x || a.y != b.y || a.pixel_x != b.pixel_x ||
+        a.pixel_y != b.pixel_y || a.triangle != b.triangle)
+      std::abort();
+  }
 }

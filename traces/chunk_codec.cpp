@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cstring>
 
+#include "core/function_clones.h"
+#include "traces/texel_lanes.h"
+
 namespace rastrace {
 
 const char* to_string(RecordKind kind) {
@@ -267,18 +270,30 @@ inline std::uint64_t unzigzag8(std::uint64_t eight) {
   return ((eight >> 1) & 0x7F7F7F7F7F7F7F7Full) ^ ((eight & 0x0101010101010101ull) * 0xFF);
 }
 
-// Adds eight deltas (signed bytes of `deltas`) to the running value, storing each sum.
+// Where a column's decoded values go: FieldOut into one field of an array of records, LaneOut
+// into a contiguous lane (texel chunks, see decode_lane).
 template <typename Record, typename Field, Field Record::*member>
-inline void add8(std::uint64_t deltas, std::uint64_t& value, std::uint64_t& all, Record* out) {
+struct FieldOut {
+  Record* out;
+  void set(std::size_t i, std::uint64_t value) const { out[i].*member = static_cast<Field>(value); }
+};
+struct LaneOut {
+  std::uint32_t* lane;
+  void set(std::size_t i, std::uint64_t value) const { lane[i] = static_cast<std::uint32_t>(value); }
+};
+
+// Adds eight deltas (signed bytes of `deltas`) to the running value, storing each sum at i..i+7.
+template <typename Out>
+inline void add8(std::uint64_t deltas, std::uint64_t& value, std::uint64_t& all, Out out, std::size_t i) {
   for (int k = 0; k < 8; ++k) {
     value += static_cast<std::uint64_t>(static_cast<std::int64_t>(static_cast<std::int8_t>(deltas >> (8 * k))));
     all |= value;
-    out[k].*member = static_cast<Field>(value);
+    out.set(i + k, value);
   }
 }
 
-template <int W, typename Record, typename Field, Field Record::*member>
-void decode_fixed(Column& col, Record* out, std::size_t begin, std::size_t end) {
+template <int W, typename Out>
+void decode_fixed(Column& col, Out out, std::size_t begin, std::size_t end) {
   std::uint64_t value = col.value, all = col.all;
   const std::uint8_t* p = col.deltas;
   std::size_t i = begin;
@@ -286,7 +301,7 @@ void decode_fixed(Column& col, Record* out, std::size_t begin, std::size_t end) 
     for (; i + 8 <= end; i += 8, p += 8) {
       std::uint64_t eight;
       std::memcpy(&eight, p, 8);
-      add8<Record, Field, member>(unzigzag8(eight), value, all, out + i);
+      add8(unzigzag8(eight), value, all, out, i);
     }
   }
   for (; i < end; ++i, p += W) {
@@ -294,7 +309,7 @@ void decode_fixed(Column& col, Record* out, std::size_t begin, std::size_t end) 
     std::memcpy(&z, p, W);
     value += unzigzag(z);
     all |= value;
-    out[i].*member = static_cast<Field>(value);
+    out.set(i, value);
   }
   col.value = value;
   col.all = all;
@@ -315,25 +330,32 @@ inline std::uint64_t full_delta(Column& col, std::uint64_t z) {
   return z;
 }
 
-template <typename Record, typename Field, Field Record::*member>
-void decode_escaped(Column& col, Record* out, std::size_t begin, std::size_t end) {
+// Whether the eight bytes at p hold an escape (0xFF) of mode 0x81.
+inline bool has_escape(const std::uint8_t* p) {
+  std::uint64_t eight;
+  std::memcpy(&eight, p, 8);
+  const std::uint64_t inverted = ~eight;  // an escape becomes a zero byte
+  return ((inverted - 0x0101010101010101ull) & ~inverted & 0x8080808080808080ull) != 0;
+}
+
+template <typename Out>
+void decode_escaped(Column& col, Out out, std::size_t begin, std::size_t end) {
   std::uint64_t value = col.value, all = col.all;
   const std::uint8_t* p = col.deltas;
   const auto step = [&](std::size_t i) {
     value += unzigzag(full_delta(col, p[i - begin]));
     all |= value;
-    out[i].*member = static_cast<Field>(value);
+    out.set(i, value);
   };
   std::size_t i = begin;
   for (; i + 8 <= end; i += 8) {
-    std::uint64_t eight;
-    std::memcpy(&eight, p + (i - begin), 8);
-    const std::uint64_t inverted = ~eight;  // an escape (0xFF) becomes a zero byte
-    if ((inverted - 0x0101010101010101ull) & ~inverted & 0x8080808080808080ull) [[unlikely]] {
+    if (has_escape(p + (i - begin))) [[unlikely]] {
       for (int k = 0; k < 8; ++k) step(i + k);
       continue;
     }
-    add8<Record, Field, member>(unzigzag8(eight), value, all, out + i);  // the common case: no escape
+    std::uint64_t eight;
+    std::memcpy(&eight, p + (i - begin), 8);
+    add8(unzigzag8(eight), value, all, out, i);  // the common case: no escape
   }
   for (; i < end; ++i) step(i);
   col.value = value;
@@ -341,8 +363,8 @@ void decode_escaped(Column& col, Record* out, std::size_t begin, std::size_t end
   col.deltas = p + (end - begin);
 }
 
-template <typename Record, typename Field, Field Record::*member>
-void decode_runs(Column& col, Record* out, std::size_t begin, std::size_t end) {
+template <typename Out>
+void decode_runs(Column& col, Out out, std::size_t begin, std::size_t end) {
   std::uint64_t value = col.value, all = col.all, left = col.run_left;
   const auto next_run = [&] {  // open_runs checked that the lengths cover every record
     left = *col.lengths++;
@@ -354,7 +376,7 @@ void decode_runs(Column& col, Record* out, std::size_t begin, std::size_t end) {
   // overwritten by the runs after it (all before `end`), and no loop exit depends on the length.
   while (i + 8 <= end) {
     if (left == 0) next_run();
-    for (int k = 0; k < 8; ++k) out[i + k].*member = static_cast<Field>(value);
+    for (int k = 0; k < 8; ++k) out.set(i + k, value);
     const std::uint64_t step = std::min<std::uint64_t>(left, 8);
     i += step;
     left -= step;
@@ -363,44 +385,150 @@ void decode_runs(Column& col, Record* out, std::size_t begin, std::size_t end) {
     if (left == 0) next_run();
     const std::size_t stop = std::min<std::size_t>(end, i + left);
     left -= stop - i;
-    for (; i < stop; ++i) out[i].*member = static_cast<Field>(value);
+    for (; i < stop; ++i) out.set(i, value);
   }
   col.value = value;
   col.all = all;
   col.run_left = left;
 }
 
+// Decodes records [begin, end) (begin >= 1) of one column into `out`.
+template <typename Out>
+void decode_into(Column& col, Out out, std::size_t begin, std::size_t end) {
+  switch (col.mode) {
+    case 0:
+      for (std::size_t i = begin; i < end; ++i) out.set(i, col.value);
+      break;
+    case 1:
+      decode_fixed<1>(col, out, begin, end);
+      break;
+    case 2:
+      decode_fixed<2>(col, out, begin, end);
+      break;
+    case 4:
+      decode_fixed<4>(col, out, begin, end);
+      break;
+    case 8:
+      decode_fixed<8>(col, out, begin, end);
+      break;
+    case kRuns:
+      decode_runs(col, out, begin, end);
+      break;
+    default:
+      decode_escaped(col, out, begin, end);
+      break;
+  }
+}
+
 // Decodes records [begin, end) (begin >= 1) of one column into the field `member` of `out`.
 template <typename Record, typename Field, Field Record::*member>
 void decode_range(Column& col, Record* out, std::size_t begin, std::size_t end) {
-  switch (col.mode) {
-    case 0:
-      for (std::size_t i = begin; i < end; ++i) out[i].*member = static_cast<Field>(col.value);
-      break;
-    case 1:
-      decode_fixed<1, Record, Field, member>(col, out, begin, end);
-      break;
-    case 2:
-      decode_fixed<2, Record, Field, member>(col, out, begin, end);
-      break;
-    case 4:
-      decode_fixed<4, Record, Field, member>(col, out, begin, end);
-      break;
-    case 8:
-      decode_fixed<8, Record, Field, member>(col, out, begin, end);
-      break;
-    case kRuns:
-      decode_runs<Record, Field, member>(col, out, begin, end);
-      break;
-    default:
-      decode_escaped<Record, Field, member>(col, out, begin, end);
-      break;
-  }
+  decode_into(col, FieldOut<Record, Field, member>{out}, begin, end);
 }
 
 // Records are decoded block by block, every column of a block before the next block, so the
 // block (kBlock records of the output structs) stays in L1 while its fields are filled in.
 constexpr std::size_t kBlock = 512;
+
+// Texel chunks are decoded block by block into lanes, one contiguous uint32 array per column
+// (texel_lanes.h), then interleaved into the records: each record is written once, and a
+// run of equal values is a few wide stores, not a store per record into a field of the records.
+// A lane has room for a run's fill to write past the block (kLaneFill values at a time).
+constexpr std::size_t kLaneFill = 16;
+constexpr std::size_t kLaneSlack = 256;  // the longest run, 255, rounded up to kLaneFill
+constexpr std::size_t kLaneSize = kBlock + kLaneSlack;
+
+// Stores kLaneFill copies of v (a few vector stores: the loop's count is fixed).
+[[gnu::always_inline]] inline void fill_lane(std::uint32_t* p, std::uint32_t v) {
+  for (std::size_t k = 0; k < kLaneFill; ++k) p[k] = v;
+}
+
+// Runs: the rest of the current run, then whole runs, each one fill of kLaneFill values (two
+// 32-byte stores with AVX2), a few for the rare longer run; stores past a run's end are
+// overwritten by the runs after it, or fall in the slack. One fill and a test, not a loop over
+// the length: most runs of a rendered frame are 4 to 16 records, and the loop's setup cost about
+// as much as the stores (texel column decoding 8% slower). The lengths were checked to add up to
+// the records when the column was opened.
+[[gnu::always_inline]] inline void decode_runs_lane(Column& col, std::uint32_t* lane, std::size_t count) {
+  std::uint64_t value = col.value, all = col.all;
+  const std::size_t rest = std::min<std::size_t>(col.run_left, count);
+  for (std::size_t j = 0; j < rest; j += kLaneFill) fill_lane(lane + j, static_cast<std::uint32_t>(value));
+  std::size_t i = rest;
+  const std::uint8_t* lengths = col.lengths;
+  const std::uint8_t* deltas = col.deltas;
+  while (i < count) {
+    const std::size_t length = *lengths++;
+    value += unzigzag(full_delta(col, *deltas++));
+    all |= value;
+    const std::uint32_t v = static_cast<std::uint32_t>(value);
+    fill_lane(lane + i, v);
+    if (length > kLaneFill) [[unlikely]]
+      for (std::size_t j = kLaneFill; j < length; j += kLaneFill) fill_lane(lane + i + j, v);
+    i += length;
+  }
+  col.run_left = col.run_left - rest + (i - count);  // one of the two terms is 0
+  col.lengths = lengths;
+  col.deltas = deltas;
+  col.value = value;
+  col.all = all;
+}
+
+// 1-byte deltas (modes 1 and 0x81): eight records at a time by add_byte_deltas(), and by the
+// scalar decoder the eight with an escape among them and the last records.
+void decode_bytes_lane(Column& col, std::uint32_t* lane, std::size_t count) {
+  const bool escapes = col.mode == kEscapedBytes;
+  std::size_t i = 0;
+  for (;;) {
+    ByteDeltaSums sums{static_cast<std::uint32_t>(col.value)};
+    const std::size_t done = add_byte_deltas(col.deltas, count - i, escapes, sums, lane + i);
+    col.value = (col.value & ~std::uint64_t{0xFFFFFFFF}) | sums.value;  // exact while the value fits 32 bits
+    col.all |= sums.left_32_bits ? ~std::uint64_t{0} : sums.ored;
+    col.deltas += done;
+    i += done;
+    if (!escapes || i + 8 > count || !has_escape(col.deltas)) break;  // without AVX2: done = 0, no escape
+    decode_into(col, LaneOut{lane}, i, i + 8);  // an escape among the next eight
+    i += 8;
+  }
+  decode_into(col, LaneOut{lane}, i, count);
+}
+
+// Decodes the column's next `count` records into lane[0..count) (the records of one block).
+[[gnu::always_inline]] inline void decode_lane(Column& col, std::uint32_t* lane, std::size_t count) {
+  switch (col.mode) {
+    case 0:
+      std::fill_n(lane, count, static_cast<std::uint32_t>(col.value));
+      break;
+    case kRuns:
+      decode_runs_lane(col, lane, count);
+      break;
+    case 1:
+    case kEscapedBytes:
+      decode_bytes_lane(col, lane, count);
+      break;
+    default:
+      decode_into(col, LaneOut{lane}, 0, count);
+      break;
+  }
+}
+
+// Decodes the first `decoded` columns of n texel records block by block into lanes and, unless
+// `out` is null (a damaged chunk), interleaves them into out[0..n). AVX2 where the machine has
+// it: a run's fill is then two 32-byte stores.
+RASTRACE_CLONES("avx2", "default")
+void decode_texel_blocks(Column* col, int decoded, bool details, TexelAccess* out, std::size_t n) {
+  alignas(64) std::uint32_t lanes[7][kLaneSize];
+  const TexelLanes block{lanes[0], lanes[1], lanes[2], lanes[3],
+                         details ? lanes[4] : nullptr, details ? lanes[5] : nullptr, details ? lanes[6] : nullptr};
+  for (std::size_t begin = 0; begin < n; begin += kBlock) {
+    const std::size_t count = std::min<std::size_t>(n - begin, kBlock);
+    const std::size_t first = begin == 0;  // record 0 is every column's first value
+    for (int k = 0; k < decoded; ++k) {
+      if (first) lanes[k][0] = static_cast<std::uint32_t>(col[k].value);
+      decode_lane(col[k], lanes[k] + first, count - first);
+    }
+    if (out) interleave_texels(block, count, out + begin);
+  }
+}
 
 }  // namespace
 
@@ -491,49 +619,10 @@ std::string decode_texel_records(std::span<const std::uint8_t> raw, std::uint32_
   const bool all = opened == 7;
   if (opened == 0) return c.error;
   out.resize(n);  // after the headers: their bytes are there (see decode_vertex_records)
-  TexelAccess* t = out.data();
-  if (n > 0) {
-    TexelAccess first{static_cast<std::uint32_t>(col[0].value), static_cast<std::uint8_t>(col[1].value),
-                      static_cast<std::uint32_t>(col[2].value), static_cast<std::uint32_t>(col[3].value),
-                      static_cast<std::uint16_t>(col[4].value), static_cast<std::uint16_t>(col[5].value),
-                      static_cast<std::uint32_t>(col[6].value)};
-    if (!details) {
-      first.pixel_x = first.pixel_y = 0;
-      first.triangle = 0;
-    }
-    t[0] = first;
-  }
   // Without details only the address columns are decoded (and checked): at most the first four.
+  // A damaged chunk (not all columns opened) is decoded for its errors only, never interleaved.
   const int decoded = details ? opened : std::min(opened, 4);
-  for (std::size_t begin = 1; begin < n; begin += kBlock) {
-    const std::size_t end = std::min<std::size_t>(n, begin + kBlock);
-    if (all && !details) {
-      decode_range<TexelAccess, std::uint32_t, &TexelAccess::texture>(col[0], t, begin, end);
-      decode_range<TexelAccess, std::uint8_t, &TexelAccess::level>(col[1], t, begin, end);
-      decode_range<TexelAccess, std::uint32_t, &TexelAccess::x>(col[2], t, begin, end);
-      decode_range<TexelAccess, std::uint32_t, &TexelAccess::y>(col[3], t, begin, end);
-      for (std::size_t i = begin; i < end; ++i) {
-        t[i].pixel_x = t[i].pixel_y = 0;
-        t[i].triangle = 0;
-      }
-    } else if (all) {
-      decode_range<TexelAccess, std::uint32_t, &TexelAccess::texture>(col[0], t, begin, end);
-      decode_range<TexelAccess, std::uint8_t, &TexelAccess::level>(col[1], t, begin, end);
-      decode_range<TexelAccess, std::uint32_t, &TexelAccess::x>(col[2], t, begin, end);
-      decode_range<TexelAccess, std::uint32_t, &TexelAccess::y>(col[3], t, begin, end);
-      decode_range<TexelAccess, std::uint16_t, &TexelAccess::pixel_x>(col[4], t, begin, end);
-      decode_range<TexelAccess, std::uint16_t, &TexelAccess::pixel_y>(col[5], t, begin, end);
-      decode_range<TexelAccess, std::uint32_t, &TexelAccess::triangle>(col[6], t, begin, end);
-    } else {
-      // Damaged: only the columns before the damage matter, for their errors.
-      if (opened > 0) decode_range<TexelAccess, std::uint32_t, &TexelAccess::texture>(col[0], t, begin, end);
-      if (opened > 1) decode_range<TexelAccess, std::uint8_t, &TexelAccess::level>(col[1], t, begin, end);
-      if (opened > 2) decode_range<TexelAccess, std::uint32_t, &TexelAccess::x>(col[2], t, begin, end);
-      if (opened > 3) decode_range<TexelAccess, std::uint32_t, &TexelAccess::y>(col[3], t, begin, end);
-      if (decoded > 4) decode_range<TexelAccess, std::uint16_t, &TexelAccess::pixel_x>(col[4], t, begin, end);
-      if (decoded > 5) decode_range<TexelAccess, std::uint16_t, &TexelAccess::pixel_y>(col[5], t, begin, end);
-    }
-  }
+  decode_texel_blocks(col, decoded, details, all ? out.data() : nullptr, n);
   for (int k = 0; k < decoded; ++k)
     if (std::string error = column_error(col[k]); !error.empty()) return error;
   if (!all) return c.error;
