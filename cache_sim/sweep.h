@@ -68,9 +68,28 @@ struct SweepResult {
   std::size_t configurations = 0;    // in the full set, impossible ones included
 };
 
+// The layout column of the rows of SweepSpec::layouts[layout_index] (texel source; a layout's
+// name), and of every row of the other sources ("stride32" for vertex buffers, "-" for addresses).
+std::string sweep_layout_name(const SweepSpec& spec, std::size_t layout_index);
+
+// Receives a sweep's rows as they are done, so that another form of the result (the Python
+// module's numpy columns) is written while the sweep runs, each row while it is still in the
+// cache, instead of in a second pass over all rows after it (10^6 rows are 180 MB).
+class SweepRowSink {
+ public:
+  virtual ~SweepRowSink() = default;
+  // Once, on the calling thread, before any row is done: how many rows the result will hold.
+  virtual void begin(std::size_t rows) = 0;
+  // rows[i] for i in `indices` are final. Called from the worker threads, concurrently; every
+  // index of the result comes exactly once.
+  virtual void done(const std::vector<SweepRow>& rows, const std::vector<std::size_t>& indices) = 0;
+};
+
 // threads = 0: one per core. progress: a bar on stderr when it is a terminal. Throws InputError
 // when no combination of the whole set is valid; a shard with no valid one returns no rows.
-SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsigned threads = 0, bool progress = true);
+// `row_sink` (optional) sees every row as it is done.
+SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsigned threads = 0, bool progress = true,
+                      SweepRowSink* row_sink = nullptr);
 
 struct VertexSweepRow {
   VertexCacheSpec cache;

@@ -3,8 +3,9 @@
 #include <sys/mman.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <new>
-#include <vector>
+#include <utility>
 
 namespace rastrace::python {
 
@@ -14,9 +15,7 @@ constexpr std::size_t kHugePage = std::size_t{2} << 20;
 
 std::size_t round_up(std::size_t bytes) { return (bytes + kHugePage - 1) / kHugePage * kHugePage; }
 
-}  // namespace
-
-void* map_column_memory(std::size_t bytes) {
+void* map_huge(std::size_t bytes) {
   const std::size_t length = round_up(bytes);
   // Map one huge page more than needed, then give back the unaligned head and the tail.
   void* raw = mmap(nullptr, length + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
@@ -34,24 +33,69 @@ void* map_column_memory(std::size_t bytes) {
   return memory;
 }
 
-void unmap_column_memory(void* memory, std::size_t bytes) { munmap(memory, round_up(bytes)); }
+// What a capsule owns: the memory, and whether its cells are references to release.
+struct OwnedColumn {
+  void* data;
+  std::size_t bytes;
+  bool mapped;
+  std::size_t object_cells;  // 0 for numeric columns
+};
+
+void free_memory(void* data, std::size_t bytes, bool mapped) {
+  if (mapped)
+    munmap(data, round_up(bytes));
+  else
+    std::free(data);
+}
+
+}  // namespace
+
+ColumnMemory::ColumnMemory(std::size_t bytes) : bytes_(bytes), mapped_(bytes >= kHugeColumnBytes) {
+  data_ = mapped_ ? map_huge(bytes) : std::calloc(bytes ? bytes : 1, 1);
+  if (data_ == nullptr) throw std::bad_alloc();
+}
+
+ColumnMemory::ColumnMemory(ColumnMemory&& other) noexcept
+    : data_(std::exchange(other.data_, nullptr)), bytes_(other.bytes_), mapped_(other.mapped_) {}
+
+ColumnMemory& ColumnMemory::operator=(ColumnMemory&& other) noexcept {
+  if (this != &other) {
+    free();
+    data_ = std::exchange(other.data_, nullptr);
+    bytes_ = other.bytes_;
+    mapped_ = other.mapped_;
+  }
+  return *this;
+}
+
+ColumnMemory::~ColumnMemory() { free(); }
+
+void ColumnMemory::free() noexcept {
+  if (data_ != nullptr) free_memory(data_, bytes_, mapped_);
+  data_ = nullptr;
+}
+
+py::capsule ColumnMemory::release_to_capsule(std::size_t rows, bool object_cells) && {
+  auto* owned = new OwnedColumn{data_, bytes_, mapped_, object_cells ? rows : 0};
+  data_ = nullptr;
+  return py::capsule(owned, [](void* p) {  // runs with the GIL held, as every deallocation
+    auto* column = static_cast<OwnedColumn*>(p);
+    auto* const cells = static_cast<PyObject**>(column->data);
+    for (std::size_t i = 0; i < column->object_cells; ++i) Py_XDECREF(cells[i]);
+    free_memory(column->data, column->bytes, column->mapped);
+    delete column;
+  });
+}
+
+py::array ColumnMemory::to_object_array(std::size_t rows) && {
+  auto* const cells = static_cast<PyObject**>(data_);
+  py::capsule owner = std::move(*this).release_to_capsule(rows, true);
+  return py::array(py::dtype("O"), {static_cast<py::ssize_t>(rows)}, {static_cast<py::ssize_t>(sizeof(PyObject*))},
+                   cells, owner);
+}
 
 py::array new_object_column(std::size_t rows) {
-  const std::size_t bytes = rows * sizeof(PyObject*);
-  if (bytes < kHugeColumnBytes) return py::array(py::dtype("O"), std::vector<py::ssize_t>{static_cast<py::ssize_t>(rows)});
-  struct Cells {
-    PyObject** cells;
-    std::size_t rows;
-  };
-  auto* cells = new Cells{static_cast<PyObject**>(map_column_memory(bytes)), rows};  // zero: null cells
-  py::capsule owner(cells, [](void* p) {  // runs with the GIL held, as every deallocation
-    auto* c = static_cast<Cells*>(p);
-    for (std::size_t i = 0; i < c->rows; ++i) Py_XDECREF(c->cells[i]);
-    unmap_column_memory(c->cells, c->rows * sizeof(PyObject*));
-    delete c;
-  });
-  return py::array(py::dtype("O"), {static_cast<py::ssize_t>(rows)}, {static_cast<py::ssize_t>(sizeof(PyObject*))},
-                   cells->cells, owner);
+  return ColumnMemory(rows * sizeof(PyObject*)).to_object_array(rows);
 }
 
 }  // namespace rastrace::python
