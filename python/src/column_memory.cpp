@@ -1,37 +1,20 @@
 #include "column_memory.h"
 
-#include <sys/mman.h>
-
-#include <cstdint>
+#include <cstddef>
 #include <cstdlib>
 #include <new>
 #include <utility>
+
+#include "core/huge_page_allocator.h"
 
 namespace rastrace::python {
 
 namespace {
 
-constexpr std::size_t kHugePage = std::size_t{2} << 20;
-
-std::size_t round_up(std::size_t bytes) { return (bytes + kHugePage - 1) / kHugePage * kHugePage; }
-
-void* map_huge(std::size_t bytes) {
-  const std::size_t length = round_up(bytes);
-  // Map one huge page more than needed, then give back the unaligned head and the tail.
-  void* raw = mmap(nullptr, length + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-  if (raw == MAP_FAILED) throw std::bad_alloc();
-  const auto start = reinterpret_cast<std::uintptr_t>(raw);
-  const std::uintptr_t aligned = (start + kHugePage - 1) / kHugePage * kHugePage;
-  if (aligned > start) munmap(raw, aligned - start);
-  if (const std::size_t tail = start + length + kHugePage - (aligned + length); tail > 0)
-    munmap(reinterpret_cast<void*>(aligned + length), tail);
-  void* memory = reinterpret_cast<void*>(aligned);
-  // Advice only: without transparent huge pages (or with them off) the mapping works as usual.
-#ifdef MADV_HUGEPAGE
-  madvise(memory, length, MADV_HUGEPAGE);
-#endif
-  return memory;
-}
+// Columns from kHugeColumnBytes on are blocks of the huge-page allocator (2 MiB-aligned
+// mappings of their own, advised MADV_HUGEPAGE, zero-filled as fresh mappings are).
+using HugeBlocks = HugePageAllocator<std::byte>;
+static_assert(kHugeColumnBytes >= HugeBlocks::kHugePage, "columns that big are mappings of their own");
 
 // What a capsule owns: the memory, and whether its cells are references to release.
 struct OwnedColumn {
@@ -43,7 +26,7 @@ struct OwnedColumn {
 
 void free_memory(void* data, std::size_t bytes, bool mapped) {
   if (mapped)
-    munmap(data, round_up(bytes));
+    HugeBlocks{}.deallocate(static_cast<std::byte*>(data), bytes);
   else
     std::free(data);
 }
@@ -51,7 +34,7 @@ void free_memory(void* data, std::size_t bytes, bool mapped) {
 }  // namespace
 
 ColumnMemory::ColumnMemory(std::size_t bytes) : bytes_(bytes), mapped_(bytes >= kHugeColumnBytes) {
-  data_ = mapped_ ? map_huge(bytes) : std::calloc(bytes ? bytes : 1, 1);
+  data_ = mapped_ ? static_cast<void*>(HugeBlocks{}.allocate(bytes)) : std::calloc(bytes ? bytes : 1, 1);
   if (data_ == nullptr) throw std::bad_alloc();
 }
 

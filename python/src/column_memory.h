@@ -28,7 +28,8 @@ class ColumnMemory {
  public:
   ColumnMemory() = default;
   // `bytes` of zeros: from kHugeColumnBytes on a mapping of its own (rounded up to 2 MiB,
-  // 2 MiB-aligned, advised for huge pages), below that from the heap. Throws std::bad_alloc.
+  // 2 MiB-aligned, advised for huge pages: core/huge_page_allocator.h), below that from the
+  // heap. Throws std::bad_alloc.
   explicit ColumnMemory(std::size_t bytes);
   ColumnMemory(ColumnMemory&& other) noexcept;
   ColumnMemory& operator=(ColumnMemory&& other) noexcept;
