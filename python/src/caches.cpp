@@ -46,8 +46,8 @@ class ByteSweep {
     title_ = "Cache sweep over " + std::string(to_string(spec_.source)) + " accesses";
   }
 
-  // Without the GIL. The rows, once in the columns, are freed as the sweep's last step (as
-  // before the columns were written by the sweep, when they were freed after the conversion).
+  // Without the GIL. The rows are in the columns by now: freeing them is the sweep's last step
+  // (the old conversion freed them after itself; the benchmark times neither).
   void run(unsigned threads, bool keep_rows) {
     rows_ = run_sweep(trace_, spec_, threads, false, columns_.get()).rows;
     if (!keep_rows) free_rows();
@@ -58,7 +58,7 @@ class ByteSweep {
 
   std::size_t size() const { return columns_ ? columns_->rows() : 0; }
 
-  // GIL held, once: the sweep's rows freed, the columns as rastrace.Columns.
+  // GIL held, once: the columns as rastrace.Columns, their memory handed to numpy.
   py::object columns() {
     if (!columns_) throw std::logic_error("a sweep's columns are handed over once");
     // The table the command line prints, without rows: its column keys and parameters.
