@@ -54,7 +54,7 @@ class ByteSweep {
   }
 
   // Without the GIL: 10^6 rows are 190 MB of 4 KiB pages (docs/PERFORMANCE.md measures this).
-  void free_rows() { std::vector<SweepRow>().swap(rows_); }
+  void free_rows() { SweepRows().swap(rows_); }
 
   std::size_t size() const { return columns_ ? columns_->rows() : 0; }
 
@@ -101,7 +101,7 @@ class ByteSweep {
   std::string trace_;
   SweepSpec spec_;
   std::unique_ptr<SweepColumns> columns_;
-  std::vector<SweepRow> rows_;
+  SweepRows rows_;
   std::string title_;
   std::vector<std::pair<std::string, TableCell>> parameters_;
 };

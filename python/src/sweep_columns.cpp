@@ -27,7 +27,7 @@ void SweepColumns::begin(std::size_t rows) {
   layout_cells_ = ColumnMemory(rows * sizeof(PyObject*));
 }
 
-void SweepColumns::done(const std::vector<SweepRow>& rows, const std::vector<std::size_t>& indices) {
+void SweepColumns::done(const SweepRows& rows, const std::vector<std::size_t>& indices) {
   std::int64_t* out[kIntegers];
   for (int k = 0; k < kIntegers; ++k) out[k] = integers_[k].as<std::int64_t>();
   double* const rate = miss_rate_.as<double>();

@@ -33,7 +33,7 @@ class SweepColumns final : public SweepRowSink {
   explicit SweepColumns(const SweepSpec& spec);
 
   void begin(std::size_t rows) override;
-  void done(const std::vector<SweepRow>& rows, const std::vector<std::size_t>& indices) override;
+  void done(const SweepRows& rows, const std::vector<std::size_t>& indices) override;
 
   std::size_t rows() const { return rows_; }
   // GIL held, once, after the sweep: the columns keyed like byte_cache_table (experiments/

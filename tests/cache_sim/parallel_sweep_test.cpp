@@ -65,7 +65,7 @@ class RecordingSink final : public SweepRowSink {
     seen.resize(rows);
     times.assign(rows, 0);
   }
-  void done(const std::vector<SweepRow>& rows, const std::vector<std::size_t>& indices) override {
+  void done(const SweepRows& rows, const std::vector<std::size_t>& indices) override {
     std::lock_guard lock(mutex);
     for (const std::size_t i : indices) {
       seen.at(i) = rows[i];
