@@ -87,7 +87,7 @@ class SampledSink final : public EventSink {
 }  // namespace
 
 void run_sampled_rows(const std::string& trace_path, const SweepSpec& spec, const std::vector<LayoutSpec>& layouts,
-                      const TextureLevels& textures, std::vector<SweepRow>& rows, bool show_progress) {
+                      const TextureLevels& textures, SweepRows& rows, bool show_progress) {
   const SampleSpec sample = *spec.sample;
   std::vector<SampledGroup> groups;
   for (std::size_t r = 0; r < rows.size(); ++r) {

@@ -17,6 +17,6 @@ namespace rastrace {
 // Throws InputError for OPT rows, and for fixed-size sampling with rows that need a
 // miniature simulation (fixed rate only).
 void run_sampled_rows(const std::string& trace_path, const SweepSpec& spec, const std::vector<LayoutSpec>& layouts,
-                      const TextureLevels& textures, std::vector<SweepRow>& rows, bool progress);
+                      const TextureLevels& textures, SweepRows& rows, bool progress);
 
 }  // namespace rastrace

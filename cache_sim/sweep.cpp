@@ -4,6 +4,7 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <numeric>
 #include <optional>
 #include <thread>
 
@@ -62,7 +63,20 @@ ReplayKinds kinds_for(SweepSource source) {
 
 }  // namespace
 
-SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsigned threads, bool show_progress) {
+std::string sweep_layout_name(const SweepSpec& spec, std::size_t layout_index) {
+  switch (spec.source) {
+    case SweepSource::Texel:
+      return layout_name(spec.layouts.at(layout_index));
+    case SweepSource::VertexBuffer:
+      return "stride" + std::to_string(spec.stride);
+    case SweepSource::Address:
+      break;
+  }
+  return "-";
+}
+
+SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsigned threads, bool show_progress,
+                      SweepRowSink* row_sink) {
   const TraceSummary summary = summarize_trace(trace_path);
   if (spec.source == SweepSource::Texel && summary.has_counts && summary.texels == 0)
     throw_in_file(trace_path,
@@ -100,9 +114,7 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
             row.configuration = configuration;
             row.cache = config;
             row.layout_index = l;
-            row.layout = spec.source == SweepSource::Texel          ? layout_name(layouts[l])
-                         : spec.source == SweepSource::VertexBuffer ? "stride" + std::to_string(spec.stride)
-                                                                    : "-";
+            row.layout = sweep_layout_name(spec, l);
             // One job per (layout, line): they share the address and line streams and the profile.
             auto found = std::find_if(groups.begin(), groups.end(), [&](const Job& j) {
               return j.layout == l && result.rows[j.rows.front()].cache.line_bytes == line;
@@ -115,6 +127,7 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
             result.rows.push_back(row);
           }
   if (!any_valid) throw InputError("sweep: no valid cache configuration among the combinations given");
+  if (row_sink) row_sink->begin(result.rows.size());
   if (result.rows.empty()) return result;
   // OPT buffers the whole line stream: refuse a trace too long for it before reading any of it.
   if (summary.has_counts && std::any_of(result.rows.begin(), result.rows.end(), [](const SweepRow& r) {
@@ -125,6 +138,11 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
                                                                   : summary.addresses);
   if (spec.sample) {
     run_sampled_rows(trace_path, spec, layouts, summary.metadata.textures, result.rows, show_progress);
+    if (row_sink) {
+      std::vector<std::size_t> all(result.rows.size());
+      std::iota(all.begin(), all.end(), std::size_t{0});
+      row_sink->done(result.rows, all);
+    }
     return result;
   }
 
@@ -171,6 +189,7 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
                             : spec.source == SweepSource::VertexBuffer ? sink.vertex_buffer_stats()
                                                                        : sink.address_stats();
         for (std::size_t i = 0; i < job.rows.size(); ++i) result.rows[job.rows[i]].stats = stats[i];
+        if (row_sink) row_sink->done(result.rows, job.rows);
         if (progress) progress->advance();
       } catch (...) {
         std::lock_guard lock(failure_mutex);

@@ -15,6 +15,7 @@
 #include "cache_sim/live_bank_sink.h"
 #include "cache_sim/shards.h"
 #include "cache_sim/texture_layout.h"
+#include "core/huge_page_allocator.h"
 
 namespace rastrace {
 
@@ -61,16 +62,39 @@ struct SweepRow {
   std::string sampled_as = {};
   double expected_error = -1;
 };
+// A sweep's rows: 10^6 configurations are about 190 MB, so they live in huge pages
+// (core/huge_page_allocator.h): building them faults once per 2 MiB instead of once per 4 KiB,
+// and freeing them unmaps a hundred pages, not fifty thousand.
+using SweepRows = std::vector<SweepRow, HugePageAllocator<SweepRow>>;
 
 struct SweepResult {
-  std::vector<SweepRow> rows;        // sorted by layout, policy, line, assoc, size (this shard's)
+  SweepRows rows;                    // sorted by layout, policy, line, assoc, size (this shard's)
   std::vector<std::string> skipped;  // impossible combinations, described (this shard's)
   std::size_t configurations = 0;    // in the full set, impossible ones included
 };
 
+// The layout column of the rows of SweepSpec::layouts[layout_index] (texel source; a layout's
+// name), and of every row of the other sources ("stride32" for vertex buffers, "-" for addresses).
+std::string sweep_layout_name(const SweepSpec& spec, std::size_t layout_index);
+
+// Receives a sweep's rows as they are done, so that another form of the result (the Python
+// module's numpy columns) is written while the sweep runs, each row while it is still in the
+// cache, instead of in a second pass over all rows after it (10^6 rows are 180 MB).
+class SweepRowSink {
+ public:
+  virtual ~SweepRowSink() = default;
+  // Once, on the calling thread, before any row is done: how many rows the result will hold.
+  virtual void begin(std::size_t rows) = 0;
+  // rows[i] for i in `indices` are final. Called from the worker threads, concurrently; every
+  // index of the result comes exactly once.
+  virtual void done(const SweepRows& rows, const std::vector<std::size_t>& indices) = 0;
+};
+
 // threads = 0: one per core. progress: a bar on stderr when it is a terminal. Throws InputError
 // when no combination of the whole set is valid; a shard with no valid one returns no rows.
-SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsigned threads = 0, bool progress = true);
+// `row_sink` (optional) sees every row as it is done.
+SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsigned threads = 0, bool progress = true,
+                      SweepRowSink* row_sink = nullptr);
 
 struct VertexSweepRow {
   VertexCacheSpec cache;

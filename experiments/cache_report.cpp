@@ -33,7 +33,7 @@ std::vector<std::pair<std::string, TableCell>> trace_parameters(const std::strin
 }
 
 Table byte_cache_table(const std::string& title, std::vector<std::pair<std::string, TableCell>> parameters,
-                       const std::vector<SweepRow>& rows, const std::string& source) {
+                       std::span<const SweepRow> rows, const std::string& source) {
   Table t;
   t.title = title;
   t.parameters = std::move(parameters);
@@ -162,7 +162,7 @@ SweepSource default_source(const TraceSummary& s) {
   return s.metadata.textures.empty() ? SweepSource::VertexBuffer : SweepSource::Texel;
 }
 
-void write_miss_rate_plot(const std::string& path, const std::string& title, const std::vector<SweepRow>& rows) {
+void write_miss_rate_plot(const std::string& path, const std::string& title, std::span<const SweepRow> rows) {
   std::set<std::uint32_t> lines, assocs;
   for (const SweepRow& r : rows) {
     lines.insert(r.cache.line_bytes);

@@ -4,6 +4,7 @@
 
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,7 @@ std::vector<std::pair<std::string, TableCell>> trace_parameters(const std::strin
 // Byte-cache rows: size_bytes, line_bytes, assoc (0 = full), policy, layout, accesses, hits,
 // misses, miss_rate, bytes_fetched, compulsory, capacity, conflict.
 Table byte_cache_table(const std::string& title, std::vector<std::pair<std::string, TableCell>> parameters,
-                       const std::vector<SweepRow>& rows, const std::string& source);
+                       std::span<const SweepRow> rows, const std::string& source);
 // Post-transform rows: policy, entries, lookups, misses, triangles, degenerate, vertices, acmr, atvr.
 Table vertex_cache_table(const std::string& title, std::vector<std::pair<std::string, TableCell>> parameters,
                          const std::vector<VertexSweepRow>& rows);
@@ -35,7 +36,7 @@ void write_output(const std::string& path, const std::string& text);
 
 // Miss rate against cache size (log2 axis), one line per policy and layout (and line size and
 // associativity when those vary). PNG or SVG by extension; written atomically through gnuplot.
-void write_miss_rate_plot(const std::string& path, const std::string& title, const std::vector<SweepRow>& rows);
+void write_miss_rate_plot(const std::string& path, const std::string& title, std::span<const SweepRow> rows);
 
 // Named series of (cache size in bytes, value), drawn against cache size on a log2 axis.
 using PlotSeries = std::map<std::string, std::vector<std::pair<std::uint64_t, double>>>;

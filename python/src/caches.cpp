@@ -1,126 +1,133 @@
 // replay, sweep and lru_profile: traces through the cache simulator, as `rastrace replay` and
 // `rastrace sweep` run them, with the results as numpy columns keyed like their JSON output.
-// A sweep's rows go to numpy without passing through a Table: a sweep may have millions of rows
-// (docs/PERFORMANCE.md measures the conversion).
+// A byte sweep's rows go to numpy without passing through a Table, written into the columns by
+// the sweep's workers: a sweep may have millions of rows (docs/PERFORMANCE.md measures the rest).
 #include <array>
 #include <memory>
+#include <optional>
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include "cache_sim/cache_spec.h"
 #include "cache_sim/profile_sink.h"
-#include "column_memory.h"
 #include "columns.h"
 #include "core/error.h"
 #include "core/units.h"
 #include "experiments/cache_report.h"
 #include "experiments/replay_tables.h"
+#include "sweep_columns.h"
 
 namespace rastrace::python {
 
 namespace {
 
-// The columns of byte_cache_table (experiments/cache_report.h), in its order.
+// The column keys of byte_cache_table (experiments/cache_report.h), in its order.
 constexpr std::array<const char*, 13> kByteColumns = {
     "size_bytes", "line_bytes", "assoc",         "policy",     "layout",   "accesses", "hits",
     "misses",     "miss_rate",  "bytes_fetched", "compulsory", "capacity", "conflict"};
 
-// A byte-cache sweep's rows with the parameters of its table; columns() converts them.
-struct SweepRows {
-  std::vector<SweepRow> rows;
-  std::string title;
-  std::vector<std::pair<std::string, TableCell>> parameters;
+// A byte-cache sweep: run() sweeps, its workers writing the numpy columns as rows finish
+// (sweep_columns.h); columns() then hands them over. Everything columns() does is what a result
+// costs beyond the sweep itself (bench/python_columns.cpp times it).
+class ByteSweep {
+ public:
+  // GIL held (the columns' text objects are made here).
+  ByteSweep(std::string trace, const TraceSummary& summary, SweepSpec spec)
+      : trace_(std::move(trace)), spec_(std::move(spec)), columns_(std::make_unique<SweepColumns>(spec_)) {
+    parameters_ = trace_parameters(trace_, summary);
+    if (spec_.source == SweepSource::Texel) {
+      parameters_.emplace_back("texel_bytes", spec_.layouts.front().texel_bytes);
+      parameters_.emplace_back("level_alignment_bytes", spec_.layouts.front().alignment);
+    } else if (spec_.source == SweepSource::VertexBuffer) {
+      parameters_.emplace_back("vertex_stride_bytes", spec_.stride);
+    }
+    parameters_.emplace_back("random_seed", spec_.seed);
+    title_ = "Cache sweep over " + std::string(to_string(spec_.source)) + " accesses";
+  }
 
-  py::object columns() const {
+  // Without the GIL. The rows are in the columns by now: freeing them is the sweep's last step
+  // (the old conversion freed them after itself; the benchmark times neither).
+  void run(unsigned threads, bool keep_rows) {
+    rows_ = run_sweep(trace_, spec_, threads, false, columns_.get()).rows;
+    if (!keep_rows) free_rows();
+  }
+
+  // Without the GIL: 10^6 rows are 190 MB of 4 KiB pages (docs/PERFORMANCE.md measures this).
+  void free_rows() { SweepRows().swap(rows_); }
+
+  std::size_t size() const { return columns_ ? columns_->rows() : 0; }
+
+  // GIL held, once: the columns as rastrace.Columns, their memory handed to numpy.
+  py::object columns() {
+    if (!columns_) throw std::logic_error("a sweep's columns are handed over once");
     // The table the command line prints, without rows: its column keys and parameters.
-    const Table empty = byte_cache_table(title, parameters, {}, source);
+    const Table empty = byte_cache_table(title_, parameters_, {}, to_string(spec_.source));
     for (std::size_t c = 0; c < kByteColumns.size(); ++c)
       if (empty.columns.at(c).key != kByteColumns[c])
         throw std::logic_error("sweep columns differ from byte_cache_table's: " + empty.columns[c].key);
-    const std::size_t n = rows.size();
-    // The columns come uninitialized (a std::vector would zero 100 MB first for 10^6 rows), large
-    // ones in huge pages (column_memory.h), and the loop fills them without the GIL.
-    py::array_t<std::int64_t> size = new_column<std::int64_t>(n), line = new_column<std::int64_t>(n),
-                              assoc = new_column<std::int64_t>(n), accesses = new_column<std::int64_t>(n),
-                              hits = new_column<std::int64_t>(n), misses = new_column<std::int64_t>(n),
-                              bytes = new_column<std::int64_t>(n), compulsory = new_column<std::int64_t>(n),
-                              capacity = new_column<std::int64_t>(n), conflict = new_column<std::int64_t>(n);
-    py::array_t<double> miss_rate = new_column<double>(n);
-    bool three_c = true;
-    {
-      std::int64_t* const out[] = {size.mutable_data(),   line.mutable_data(),       assoc.mutable_data(),
-                                   accesses.mutable_data(), hits.mutable_data(),     misses.mutable_data(),
-                                   bytes.mutable_data(),  compulsory.mutable_data(), capacity.mutable_data(),
-                                   conflict.mutable_data()};
-      double* const rate = miss_rate.mutable_data();
-      py::gil_scoped_release release;
-      for (std::size_t i = 0; i < n; ++i) {
-        const SweepRow& r = rows[i];
-        out[0][i] = static_cast<std::int64_t>(r.cache.size_bytes);
-        out[1][i] = r.cache.line_bytes;
-        out[2][i] = r.cache.assoc;
-        out[3][i] = static_cast<std::int64_t>(r.stats.accesses);
-        out[4][i] = static_cast<std::int64_t>(r.stats.hits);
-        out[5][i] = static_cast<std::int64_t>(r.stats.misses);
-        rate[i] = r.stats.miss_rate();
-        out[6][i] = static_cast<std::int64_t>(r.stats.bytes_fetched);
-        out[7][i] = static_cast<std::int64_t>(r.stats.compulsory);
-        out[8][i] = r.stats.capacity;
-        out[9][i] = r.stats.conflict;
-        three_c = three_c && r.stats.has_three_c;
-      }
-    }
-    TextColumn policy(n), layout(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      policy.set(i, to_string(rows[i].cache.policy));
-      layout.set(i, rows[i].layout);
-    }
-    py::dict columns;
-    columns["size_bytes"] = size;
-    columns["line_bytes"] = line;
-    columns["assoc"] = assoc;
-    columns["policy"] = policy.release();
-    columns["layout"] = layout.release();
-    columns["accesses"] = accesses;
-    columns["hits"] = hits;
-    columns["misses"] = misses;
-    columns["miss_rate"] = miss_rate;
-    columns["bytes_fetched"] = bytes;
-    if (three_c) {  // sweeps always compute the split; without it the JSON has nulls
-      columns["compulsory"] = compulsory;
-      columns["capacity"] = capacity;
-      columns["conflict"] = conflict;
-    }
+    py::dict columns = columns_->release();
+    columns_.reset();
     return make_columns(columns, empty.title, empty.parameters);
   }
-  std::string source;
+
+  // The state run() ends in for a sweep of `repeat` times these rows, without a sweep of that
+  // many configurations (the benchmark's 10^6-row result): the rows repeated, each repetition
+  // written into fresh columns right after it is copied, as a worker writes its job's rows right
+  // after their simulation (one sink call per repetition), then freed unless `keep_rows`.
+  // write_columns = false copies the rows alone (the benchmark's baseline for the writes' cost).
+  // Without the GIL but for the text objects.
+  std::unique_ptr<ByteSweep> repeated(std::size_t repeat, bool write_columns, bool keep_rows) const {
+    std::unique_ptr<ByteSweep> out(new ByteSweep(*this));
+    py::gil_scoped_release release;
+    out->rows_.reserve(rows_.size() * repeat);
+    if (write_columns) out->columns_->begin(rows_.size() * repeat);
+    std::vector<std::size_t> job(rows_.size());
+    for (std::size_t k = 0; k < repeat; ++k) {
+      out->rows_.insert(out->rows_.end(), rows_.begin(), rows_.end());
+      for (std::size_t i = 0; i < job.size(); ++i) job[i] = k * rows_.size() + i;
+      if (write_columns) out->columns_->done(out->rows_, job);
+    }
+    if (!keep_rows) out->free_rows();
+    return out;
+  }
+
+ private:
+  // A copy with the same parameters and new, empty columns (GIL held).
+  ByteSweep(const ByteSweep& other)
+      : trace_(other.trace_), spec_(other.spec_), columns_(std::make_unique<SweepColumns>(spec_)),
+        title_(other.title_), parameters_(other.parameters_) {}
+
+  std::string trace_;
+  SweepSpec spec_;
+  std::unique_ptr<SweepColumns> columns_;
+  SweepRows rows_;
+  std::string title_;
+  std::vector<std::pair<std::string, TableCell>> parameters_;
 };
 
-// `rastrace sweep TRACE --cache SPEC` for a byte-cache spec, rows repeated `repeat` times (1 for
-// a sweep; more only to measure the conversion of a large result, bench/python_columns.cpp).
-SweepRows byte_sweep(const std::string& trace, const CacheSpec& cache, unsigned threads, std::size_t repeat) {
-  const TraceSummary summary = summarize_trace(trace);
-  SweepRows out;
-  out.parameters = trace_parameters(trace, summary);
-  const SweepSpec spec = sweep_spec(cache, default_source(summary));
-  const SweepResult result = run_sweep(trace, spec, threads, false);
-  if (spec.source == SweepSource::Texel) {
-    out.parameters.emplace_back("texel_bytes", spec.layouts.front().texel_bytes);
-    out.parameters.emplace_back("level_alignment_bytes", spec.layouts.front().alignment);
-  } else if (spec.source == SweepSource::VertexBuffer) {
-    out.parameters.emplace_back("vertex_stride_bytes", spec.stride);
+// `rastrace sweep TRACE --cache SPEC` for a byte-cache spec, not yet handed over; keep_rows for
+// repeated(). GIL held.
+std::unique_ptr<ByteSweep> byte_sweep(const std::string& trace, const std::string& cache_text, unsigned threads,
+                                      bool keep_rows) {
+  std::optional<TraceSummary> summary;
+  SweepSpec spec;
+  {
+    py::gil_scoped_release release;
+    const CacheSpec cache = parse_cache_spec(cache_text, "--cache");
+    if (cache.kind != CacheKind::Byte) throw InputError("_sweep_rows: expected a byte-cache spec");
+    summary = summarize_trace(trace);
+    spec = sweep_spec(cache, default_source(*summary));
   }
-  out.parameters.emplace_back("random_seed", spec.seed);
-  out.title = "Cache sweep over " + std::string(to_string(spec.source)) + " accesses";
-  out.source = to_string(spec.source);
-  out.rows.reserve(result.rows.size() * repeat);
-  for (std::size_t k = 0; k < repeat; ++k) out.rows.insert(out.rows.end(), result.rows.begin(), result.rows.end());
-  return out;
+  auto sweep = std::make_unique<ByteSweep>(trace, *summary, std::move(spec));
+  {
+    py::gil_scoped_release release;
+    sweep->run(threads, keep_rows);
+  }
+  return sweep;
 }
 
 py::object sweep(const std::string& trace, const std::string& cache_text, unsigned threads, bool keep_vertex_cache) {
-  std::optional<SweepRows> byte_rows;
   Table vertex_table;
   {
     py::gil_scoped_release release;
@@ -131,11 +138,10 @@ py::object sweep(const std::string& trace, const std::string& cache_text, unsign
       const auto rows = run_vertex_sweep(trace, vertex_caches(cache), !keep_vertex_cache);
       parameters.emplace_back("vertex_cache_per_draw", keep_vertex_cache ? "kept" : "flushed");
       vertex_table = vertex_cache_table("Post-transform vertex cache sweep", parameters, rows);
-    } else {
-      byte_rows = byte_sweep(trace, cache, threads, 1);
     }
   }
-  return byte_rows ? byte_rows->columns() : table_columns(vertex_table);
+  if (!vertex_table.columns.empty()) return table_columns(vertex_table);
+  return byte_sweep(trace, cache_text, threads, false)->columns();
 }
 
 py::dict replay(const std::string& trace, const std::vector<std::string>& caches, bool keep_vertex_cache) {
@@ -227,19 +233,19 @@ void bind_caches(py::module_& m) {
         "texture units, each with its own cache, as `rastrace replay --level ... --units N --tile T`;\n"
         "the figures are sums over the units: a hierarchy's first level at every size at once.");
 
-  py::class_<SweepRows>(m, "_SweepRows")
-      .def("__len__", [](const SweepRows& r) { return r.rows.size(); })
-      .def("columns", &SweepRows::columns);
+  py::class_<ByteSweep>(m, "_SweepRows")
+      .def("__len__", &ByteSweep::size)
+      .def("repeated", &ByteSweep::repeated, py::arg("repeat"), py::arg("write_columns") = true,
+           py::arg("keep_rows") = false,
+           "The state of a sweep of `repeat` times these rows, columns written as the sweep writes them.")
+      .def("free_rows", &ByteSweep::free_rows, py::call_guard<py::gil_scoped_release>(),
+           "Frees the rows kept by repeated(keep_rows=True), as the sweep's last step does.")
+      .def("columns", &ByteSweep::columns, "The Columns (once): what a result costs beyond the sweep.");
   m.def(
       "_sweep_rows",
-      [](const std::string& trace, const std::string& cache_text, std::size_t repeat) {
-        py::gil_scoped_release release;
-        const CacheSpec cache = parse_cache_spec(cache_text, "--cache");
-        if (cache.kind != CacheKind::Byte) throw InputError("_sweep_rows: expected a byte-cache spec");
-        return byte_sweep(trace, cache, 0, repeat);
-      },
-      py::arg("trace"), py::arg("cache"), py::arg("repeat") = 1,
-      "A byte-cache sweep's rows, repeated `repeat` times, not yet converted (to time columns()).");
+      [](const std::string& trace, const std::string& cache_text) { return byte_sweep(trace, cache_text, 0, true); },
+      py::arg("trace"), py::arg("cache"),
+      "A byte-cache sweep whose columns are not yet handed over and whose rows are kept (for repeated()).");
 }
 
 }  // namespace rastrace::python

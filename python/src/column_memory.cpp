@@ -1,57 +1,84 @@
 #include "column_memory.h"
 
-#include <sys/mman.h>
-
-#include <cstdint>
+#include <cstddef>
+#include <cstdlib>
 #include <new>
-#include <vector>
+#include <utility>
+
+#include "core/huge_page_allocator.h"
 
 namespace rastrace::python {
 
 namespace {
 
-constexpr std::size_t kHugePage = std::size_t{2} << 20;
+// Columns from kHugeColumnBytes on are blocks of the huge-page allocator (2 MiB-aligned
+// mappings of their own, advised MADV_HUGEPAGE, zero-filled as fresh mappings are).
+using HugeBlocks = HugePageAllocator<std::byte>;
+static_assert(kHugeColumnBytes >= HugeBlocks::kHugePage, "columns that big are mappings of their own");
 
-std::size_t round_up(std::size_t bytes) { return (bytes + kHugePage - 1) / kHugePage * kHugePage; }
+// What a capsule owns: the memory, and whether its cells are references to release.
+struct OwnedColumn {
+  void* data;
+  std::size_t bytes;
+  bool mapped;
+  std::size_t object_cells;  // 0 for numeric columns
+};
+
+void free_memory(void* data, std::size_t bytes, bool mapped) {
+  if (mapped)
+    HugeBlocks{}.deallocate(static_cast<std::byte*>(data), bytes);
+  else
+    std::free(data);
+}
 
 }  // namespace
 
-void* map_column_memory(std::size_t bytes) {
-  const std::size_t length = round_up(bytes);
-  // Map one huge page more than needed, then give back the unaligned head and the tail.
-  void* raw = mmap(nullptr, length + kHugePage, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-  if (raw == MAP_FAILED) throw std::bad_alloc();
-  const auto start = reinterpret_cast<std::uintptr_t>(raw);
-  const std::uintptr_t aligned = (start + kHugePage - 1) / kHugePage * kHugePage;
-  if (aligned > start) munmap(raw, aligned - start);
-  if (const std::size_t tail = start + length + kHugePage - (aligned + length); tail > 0)
-    munmap(reinterpret_cast<void*>(aligned + length), tail);
-  void* memory = reinterpret_cast<void*>(aligned);
-  // Advice only: without transparent huge pages (or with them off) the mapping works as usual.
-#ifdef MADV_HUGEPAGE
-  madvise(memory, length, MADV_HUGEPAGE);
-#endif
-  return memory;
+ColumnMemory::ColumnMemory(std::size_t bytes) : bytes_(bytes), mapped_(bytes >= kHugeColumnBytes) {
+  data_ = mapped_ ? static_cast<void*>(HugeBlocks{}.allocate(bytes)) : std::calloc(bytes ? bytes : 1, 1);
+  if (data_ == nullptr) throw std::bad_alloc();
 }
 
-void unmap_column_memory(void* memory, std::size_t bytes) { munmap(memory, round_up(bytes)); }
+ColumnMemory::ColumnMemory(ColumnMemory&& other) noexcept
+    : data_(std::exchange(other.data_, nullptr)), bytes_(other.bytes_), mapped_(other.mapped_) {}
+
+ColumnMemory& ColumnMemory::operator=(ColumnMemory&& other) noexcept {
+  if (this != &other) {
+    free();
+    data_ = std::exchange(other.data_, nullptr);
+    bytes_ = other.bytes_;
+    mapped_ = other.mapped_;
+  }
+  return *this;
+}
+
+ColumnMemory::~ColumnMemory() { free(); }
+
+void ColumnMemory::free() noexcept {
+  if (data_ != nullptr) free_memory(data_, bytes_, mapped_);
+  data_ = nullptr;
+}
+
+py::capsule ColumnMemory::release_to_capsule(std::size_t rows, bool object_cells) && {
+  auto* owned = new OwnedColumn{data_, bytes_, mapped_, object_cells ? rows : 0};
+  data_ = nullptr;
+  return py::capsule(owned, [](void* p) {  // runs with the GIL held, as every deallocation
+    auto* column = static_cast<OwnedColumn*>(p);
+    auto* const cells = static_cast<PyObject**>(column->data);
+    for (std::size_t i = 0; i < column->object_cells; ++i) Py_XDECREF(cells[i]);
+    free_memory(column->data, column->bytes, column->mapped);
+    delete column;
+  });
+}
+
+py::array ColumnMemory::to_object_array(std::size_t rows) && {
+  auto* const cells = static_cast<PyObject**>(data_);
+  py::capsule owner = std::move(*this).release_to_capsule(rows, true);
+  return py::array(py::dtype("O"), {static_cast<py::ssize_t>(rows)}, {static_cast<py::ssize_t>(sizeof(PyObject*))},
+                   cells, owner);
+}
 
 py::array new_object_column(std::size_t rows) {
-  const std::size_t bytes = rows * sizeof(PyObject*);
-  if (bytes < kHugeColumnBytes) return py::array(py::dtype("O"), std::vector<py::ssize_t>{static_cast<py::ssize_t>(rows)});
-  struct Cells {
-    PyObject** cells;
-    std::size_t rows;
-  };
-  auto* cells = new Cells{static_cast<PyObject**>(map_column_memory(bytes)), rows};  // zero: null cells
-  py::capsule owner(cells, [](void* p) {  // runs with the GIL held, as every deallocation
-    auto* c = static_cast<Cells*>(p);
-    for (std::size_t i = 0; i < c->rows; ++i) Py_XDECREF(c->cells[i]);
-    unmap_column_memory(c->cells, c->rows * sizeof(PyObject*));
-    delete c;
-  });
-  return py::array(py::dtype("O"), {static_cast<py::ssize_t>(rows)}, {static_cast<py::ssize_t>(sizeof(PyObject*))},
-                   cells->cells, owner);
+  return ColumnMemory(rows * sizeof(PyObject*)).to_object_array(rows);
 }
 
 }  // namespace rastrace::python

@@ -112,11 +112,15 @@ def test_bad_spec_raises_the_cli_message(bunny_trace):
 
 def test_columns_of_a_large_sweep_equal_the_small_ones_and_release_their_text(bunny_trace):
     # From 4 MiB a column lives in huge-page memory of its own (python/src/column_memory.h); the
-    # text columns' cells are references that memory's owner releases.
+    # sweep's workers write the text columns' cells without the GIL and count them, and the
+    # references are added when the columns are handed over, released by that memory's owner.
     spec = "size=1KiB..8KiB,line=64B,assoc=full,policy=fifo/lru,layout=linear"
     small = rastrace.sweep(str(bunny_trace), spec)
     repeat = -(-(1 << 19) // small.rows)  # 2^19 rows of 8 bytes: 4 MiB
-    large = rastrace._rastrace._sweep_rows(str(bunny_trace), spec, repeat).columns()
+    swept = rastrace._rastrace._sweep_rows(str(bunny_trace), spec).repeated(repeat)
+    large = swept.columns()
+    with pytest.raises(RuntimeError, match="handed over once"):
+        swept.columns()
     assert large.rows == small.rows * repeat and list(large) == list(small)
     for key, column in small.items():
         assert large[key].dtype == column.dtype, key
