@@ -89,20 +89,8 @@ void add_sweep_command(CLI::App& app) {
       if (!o->sample.empty()) spec.sample = parse_sample_spec(o->sample, "--sample");
       const SweepResult result = run_sweep(o->trace, spec, o->threads);
       for (const std::string& skipped : result.skipped) std::cerr << "rastrace sweep: skipped " << skipped << "\n";
-      if (spec.source == SweepSource::Texel) {
-        parameters.emplace_back("texel_bytes", spec.layouts.front().texel_bytes);
-        parameters.emplace_back("level_alignment_bytes", spec.layouts.front().alignment);
-      } else if (spec.source == SweepSource::VertexBuffer) {
-        parameters.emplace_back("vertex_stride_bytes", spec.stride);
-      }
-      parameters.emplace_back("random_seed", spec.seed);
-      if (spec.sample)
-        parameters.emplace_back("sampling", describe(*spec.sample) +
-                                                " of the lines by spatial hash: fully associative LRU by SHARDS "
-                                                "(Waldspurger et al. 2015), other caches by miniature simulation "
-                                                "(Waldspurger et al. 2017); expected error = half the difference of "
-                                                "two independent half samples");
-      const std::string title = "Cache sweep over " + std::string(to_string(spec.source)) + " accesses";
+      add_sweep_parameters(spec, parameters);
+      const std::string title = sweep_title(spec);
       table = byte_cache_table(title, parameters, result.rows, to_string(spec.source));
       part.configurations = result.configurations;
       part.skipped = result.skipped;

@@ -32,6 +32,26 @@ std::vector<std::pair<std::string, TableCell>> trace_parameters(const std::strin
   return p;
 }
 
+std::string sweep_title(const SweepSpec& spec) {
+  return "Cache sweep over " + std::string(to_string(spec.source)) + " accesses";
+}
+
+void add_sweep_parameters(const SweepSpec& spec, std::vector<std::pair<std::string, TableCell>>& parameters) {
+  if (spec.source == SweepSource::Texel) {
+    parameters.emplace_back("texel_bytes", spec.layouts.front().texel_bytes);
+    parameters.emplace_back("level_alignment_bytes", spec.layouts.front().alignment);
+  } else if (spec.source == SweepSource::VertexBuffer) {
+    parameters.emplace_back("vertex_stride_bytes", spec.stride);
+  }
+  parameters.emplace_back("random_seed", spec.seed);
+  if (spec.sample)
+    parameters.emplace_back("sampling", describe(*spec.sample) +
+                                            " of the lines by spatial hash: fully associative LRU by SHARDS "
+                                            "(Waldspurger et al. 2015), other caches by miniature simulation "
+                                            "(Waldspurger et al. 2017); expected error = half the difference of "
+                                            "two independent half samples");
+}
+
 Table byte_cache_table(const std::string& title, std::vector<std::pair<std::string, TableCell>> parameters,
                        std::span<const SweepRow> rows, const std::string& source) {
   Table t;

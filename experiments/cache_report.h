@@ -18,6 +18,12 @@ namespace rastrace {
 // The parameters every table about this trace states: the file and its metadata.
 std::vector<std::pair<std::string, TableCell>> trace_parameters(const std::string& path, const TraceSummary& summary);
 
+// A byte-cache sweep's title, and the parameters its table states beyond the trace's: the
+// layout's texel size and level alignment (texel source) or the vertex stride, the random seed,
+// and the sampling of a sampled sweep.
+std::string sweep_title(const SweepSpec& spec);
+void add_sweep_parameters(const SweepSpec& spec, std::vector<std::pair<std::string, TableCell>>& parameters);
+
 // Byte-cache rows: size_bytes, line_bytes, assoc (0 = full), policy, layout, accesses, hits,
 // misses, miss_rate, bytes_fetched, compulsory, capacity, conflict.
 Table byte_cache_table(const std::string& title, std::vector<std::pair<std::string, TableCell>> parameters,

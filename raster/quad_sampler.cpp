@@ -76,25 +76,17 @@ void sample_quad(const Texture& texture, const SamplerState& state, f32x4 s, f32
   const LevelPlan plan = plan_levels(texture, state, lambda);
   const Image& first = texture.levels[plan.first];
   const LevelTexels first_texels = level_texels(first, plan.filter, state, s, t);
-  if (!plan.blend) {
-    for (int i = 0; i < 4; ++i) {
-      if (!(pixels >> i & 1u)) continue;
-      site.pixel_x = static_cast<std::uint16_t>(qx + (i & 1));
-      site.pixel_y = static_cast<std::uint16_t>(qy + (i >> 1));
-      rgba[i] = filter_pixel(first, plan.first, plan.filter, first_texels, i, recorder, site);
-    }
-    return;
-  }
-  const Image& second = texture.levels[plan.first + 1];
-  const LevelTexels second_texels = level_texels(second, TextureFilter::Linear, state, s, t);
-  const f32x4 fraction = splat(plan.fraction);
+  // LINEAR_MIPMAP_LINEAR between two levels: the second level's texels too.
+  const Image& second = texture.levels[plan.blend ? plan.first + 1 : plan.first];
+  const LevelTexels second_texels = plan.blend ? level_texels(second, TextureFilter::Linear, state, s, t) : LevelTexels{};
   for (int i = 0; i < 4; ++i) {
     if (!(pixels >> i & 1u)) continue;
     site.pixel_x = static_cast<std::uint16_t>(qx + (i & 1));
     site.pixel_y = static_cast<std::uint16_t>(qy + (i >> 1));
-    const f32x4 t1 = filter_pixel(first, plan.first, plan.filter, first_texels, i, recorder, site);
+    rgba[i] = filter_pixel(first, plan.first, plan.filter, first_texels, i, recorder, site);
+    if (!plan.blend) continue;
     const f32x4 t2 = filter_pixel(second, plan.first + 1, TextureFilter::Linear, second_texels, i, recorder, site);
-    rgba[i] = t1 + (t2 - t1) * fraction;
+    rgba[i] = rgba[i] + (t2 - rgba[i]) * splat(plan.fraction);
   }
 }
 

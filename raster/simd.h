@@ -22,10 +22,6 @@ using i64x4 = std::int64_t __attribute__((vector_size(32)));
 inline f32x4 splat(float x) { return f32x4{x, x, x, x}; }
 inline i32x4 splat(std::int32_t x) { return i32x4{x, x, x, x}; }
 
-// Bit i set where lane i holds a comparison's true (all ones).
-inline unsigned lane_mask(i32x4 condition) {
-  return static_cast<unsigned>((condition[0] & 1) | (condition[1] & 2) | (condition[2] & 4) | (condition[3] & 8));
-}
 // Bit i set where lane i is >= 0.
 inline unsigned non_negative_mask(const i64x4& v) {
   const i64x4 sign = v >> 63;  // 0 or -1

@@ -36,14 +36,8 @@ class ByteSweep {
   ByteSweep(std::string trace, const TraceSummary& summary, SweepSpec spec)
       : trace_(std::move(trace)), spec_(std::move(spec)), columns_(std::make_unique<SweepColumns>(spec_)) {
     parameters_ = trace_parameters(trace_, summary);
-    if (spec_.source == SweepSource::Texel) {
-      parameters_.emplace_back("texel_bytes", spec_.layouts.front().texel_bytes);
-      parameters_.emplace_back("level_alignment_bytes", spec_.layouts.front().alignment);
-    } else if (spec_.source == SweepSource::VertexBuffer) {
-      parameters_.emplace_back("vertex_stride_bytes", spec_.stride);
-    }
-    parameters_.emplace_back("random_seed", spec_.seed);
-    title_ = "Cache sweep over " + std::string(to_string(spec_.source)) + " accesses";
+    add_sweep_parameters(spec_, parameters_);
+    title_ = sweep_title(spec_);
   }
 
   // Without the GIL. The rows are in the columns by now: freeing them is the sweep's last step
