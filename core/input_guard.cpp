@@ -56,4 +56,11 @@ std::uint64_t checked_bytes(std::uint64_t count, std::uint64_t element_bytes, co
   return count * element_bytes;
 }
 
+void check_empty_records(std::uint64_t count, const std::string& where, const std::string& what) {
+  if (count > kMaxEmptyRecords)
+    throw InputError(where + ": " + std::to_string(count) + " " + what + " of no bytes each: expected at most " +
+                     std::to_string(kMaxEmptyRecords) +
+                     " (records that carry no data, yet each is a pass of the reader)");
+}
+
 }  // namespace rastrace

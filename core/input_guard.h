@@ -2,6 +2,7 @@
 //   excerpt()               quotes user input in an error without echoing all of it
 //   require_regular_file()  refuses devices, FIFOs and sockets before a reader blocks or reads forever
 //   checked_bytes()         the one check for an allocation whose size comes from input
+//   check_empty_records()   the bound on a declared count of records that take no bytes
 #pragma once
 
 #include <cstdint>
@@ -25,6 +26,14 @@ void require_regular_file(const std::string& path);
 std::uint64_t checked_bytes(std::uint64_t count, std::uint64_t element_bytes, const std::string& what);
 // The limit checked_bytes() applies.
 std::uint64_t allocation_limit_bytes();
+
+// A loop over a count that a file declares must consume input on every pass (then the file's end
+// stops it) or be bounded before it runs. Records of no bytes at all (a PLY element without
+// properties) consume nothing, so a header may declare at most kMaxEmptyRecords of them:
+// check_empty_records() throws InputError "<where>: N <what> of no bytes each: expected at most
+// 65536 ..." otherwise; `where` names the file and the place ("m.ply:7: element 'e'").
+inline constexpr std::uint64_t kMaxEmptyRecords = std::uint64_t{1} << 16;
+void check_empty_records(std::uint64_t count, const std::string& where, const std::string& what);
 
 // Grows a table indexed by ids read from input (vertex indices...) so that `index` fits, at least
 // doubling it, after checked_bytes(): a stray index near 2^32 is a clear error, not bad_alloc.

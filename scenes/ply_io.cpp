@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/input_guard.h"
 #include "scenes/mesh_io.h"
 #include "scenes/mesh_text_writer.h"
 #include "scenes/polygon_fan.h"
@@ -370,6 +371,14 @@ Mesh load_ply(const std::string& path) {
   assign_roles(path, header, vertex, face);
   if (vertex->count > 0xffffffffull)
     throw_at_line(path, vertex->header_line, "vertex count too large (at most 4294967295)");
+
+  // Every record of an element with properties reads at least one value, so the loop over its
+  // count stops at the file's end; an element without any reads nothing and is bounded here.
+  for (const Element& element : header.elements)
+    if (element.properties.empty())
+      check_empty_records(
+          element.count, path + ":" + std::to_string(element.header_line) + ": element '" + excerpt(element.name) + "'",
+          "records");
 
   Mesh mesh;
   mesh.name = path;

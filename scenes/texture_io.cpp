@@ -10,6 +10,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "core/error.h"
+#include "core/input_guard.h"
 #include "scenes/text_parse.h"
 
 namespace rastrace {
@@ -26,6 +27,11 @@ Image decode(OIIO::ImageInput& input, const std::string& name) {
     throw_in_file(name, "image of " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
                             " texels: expected at most 2^28 texels");
   const int channels = spec.nchannels;
+  // The header's size, not the file's bytes, sizes both buffers (a few hundred compressed bytes
+  // can claim 2^28 texels): through the allocation limit before either is made.
+  checked_bytes(static_cast<std::uint64_t>(spec.width) * static_cast<std::uint64_t>(spec.height),
+                static_cast<std::uint64_t>(channels) + 4,
+                name + ": image of " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + " texels");
   std::vector<std::uint8_t> pixels(static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) *
                                    static_cast<std::size_t>(channels));
   if (!input.read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels.data()))
