@@ -44,12 +44,15 @@ run_one() {
   local t=$1
   local corpus="$dir/corpus/$t" artifacts="$dir/artifacts/$t"
   mkdir -p "$corpus" "$artifacts"
-  local seeds=("$here/fuzz/corpus/$t")
+  local seeds=("$here/fuzz/corpus/$t") dict=()
+  # A dictionary (keywords, header counts such as 4294967295) lets mutations reach the loops over
+  # declared counts, which random bytes rarely spell.
+  [ -f "$here/fuzz/dict/$t.dict" ] && dict=("-dict=$here/fuzz/dict/$t.dict")
   [ -d "$dir/seeds/$t" ] && seeds+=("$dir/seeds/$t")
   # -malloc_limit_mb: one allocation over 1 GiB is a failure even when RSS stays low.
   "$dir/fuzz/fuzz_$t" "$corpus" "${seeds[@]}" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=1024 \
     -malloc_limit_mb=1024 -max_len="$(max_len "$t")" -artifact_prefix="$artifacts/" -print_final_stats=1 \
-    >"$dir/$t.log" 2>&1
+    "${dict[@]}" >"$dir/$t.log" 2>&1
 }
 
 jobs="${FUZZ_JOBS:-1}"
