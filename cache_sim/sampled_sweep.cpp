@@ -1,5 +1,6 @@
 #include "cache_sim/sampled_sweep.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <memory>
@@ -86,10 +87,33 @@ class SampledSink final : public EventSink {
 
 }  // namespace
 
-void run_sampled_rows(const std::string& trace_path, const SweepSpec& spec, const std::vector<LayoutSpec>& layouts,
-                      const TextureLevels& textures, SweepRows& rows, bool show_progress) {
+std::vector<std::size_t> run_sampled_rows(const std::string& trace_path, const SweepSpec& spec,
+                                          const std::vector<LayoutSpec>& layouts, const TextureLevels& textures,
+                                          std::uint64_t records, SweepRows& rows, bool show_progress) {
   const SampleSpec sample = *spec.sample;
+  const SampleGuards& guards = spec.sample_guards;
   std::vector<SampledGroup> groups;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const SweepRow& row = rows[r];
+    const bool stack = row.cache.policy == ReplacementPolicy::Lru && row.cache.assoc == 0;
+    if (!stack && sample.max_lines)
+      throw InputError("--sample " + describe(sample) + ": fixed-size sampling gives fully associative LRU only; " +
+                       describe(row.cache) + " needs a fixed rate (miniature simulation)");
+    if (row.cache.policy == ReplacementPolicy::Opt)
+      throw InputError("sampled sweep: opt has no miniature simulation here; drop opt or --sample");
+  }
+  std::vector<std::size_t> exact;
+  const auto simulate_exactly = [&](std::size_t r) {
+    rows[r].sampled_as = "exact";
+    rows[r].expected_error = 0;
+    exact.push_back(r);
+  };
+  // A short trace: the exact sweep costs about as much as the sample and states no error.
+  if (records > 0 && double(records) * double(rows.size()) <= double(guards.exact_accesses)) {
+    for (std::size_t r = 0; r < rows.size(); ++r) simulate_exactly(r);
+    return exact;
+  }
+
   for (std::size_t r = 0; r < rows.size(); ++r) {
     const SweepRow& row = rows[r];
     const std::uint32_t shift = static_cast<std::uint32_t>(std::countr_zero(row.cache.line_bytes));
@@ -102,10 +126,12 @@ void run_sampled_rows(const std::string& trace_path, const SweepSpec& spec, cons
       g->line_shift = shift;
     }
     const bool stack = row.cache.policy == ReplacementPolicy::Lru && row.cache.assoc == 0;
-    if (!stack && sample.max_lines)
-      throw InputError("--sample " + describe(sample) + ": fixed-size sampling gives fully associative LRU only; " +
-                       describe(row.cache) + " needs a fixed rate (miniature simulation)");
-    (stack ? g->shards_rows : g->mini_rows).push_back(r);
+    // A fixed rate's small caches are known before the pass; a fixed size's rate only falls, so
+    // its rows are checked again at the final rate below.
+    if (double(row.cache.lines()) * sample.rate < double(guards.min_sampled_lines))
+      simulate_exactly(r);
+    else
+      (stack ? g->shards_rows : g->mini_rows).push_back(r);
   }
   for (SampledGroup& g : groups) {
     if (!g.shards_rows.empty()) g.shards = std::make_unique<ShardsProfile>(sample);
@@ -114,6 +140,8 @@ void run_sampled_rows(const std::string& trace_path, const SweepSpec& spec, cons
     if (!caches.empty()) g.minis = std::make_unique<MiniSimulations>(caches, sample.rate);
     g.sampled = std::make_unique<SampledBatch>(sample.rate);
   }
+  std::erase_if(groups, [](const SampledGroup& g) { return !g.shards && !g.minis; });
+  if (groups.empty()) return exact;
 
   ReplayKinds kinds;
   kinds.vertices = spec.source == SweepSource::VertexBuffer;
@@ -141,6 +169,10 @@ void run_sampled_rows(const std::string& trace_path, const SweepSpec& spec, cons
   for (SampledGroup& g : groups) {
     for (const std::size_t r : g.shards_rows) {
       const std::uint64_t lines = rows[r].cache.lines();
+      if (double(lines) * g.shards->rate() < double(guards.min_sampled_lines)) {
+        simulate_exactly(r);
+        continue;
+      }
       estimate(rows[r], g.shards->accesses(), g.shards->miss_ratio(lines), g.shards->expected_error(lines));
       rows[r].sampled_as = "shards";
     }
@@ -150,6 +182,8 @@ void run_sampled_rows(const std::string& trace_path, const SweepSpec& spec, cons
       row.sampled_as = "mini " + describe(g.minis->scaled(i));
     }
   }
+  std::sort(exact.begin(), exact.end());
+  return exact;
 }
 
 }  // namespace rastrace

@@ -231,8 +231,12 @@ std::uint64_t ShardsProfile::tracked_lines() const { return full_->stack.live_li
 
 double ShardsProfile::miss_ratio(std::uint64_t cache_lines) const { return full_->miss_ratio(cache_lines, accesses_); }
 
+double ShardsProfile::half_miss_ratio(int half, std::uint64_t cache_lines) const {
+  return half_[half]->miss_ratio(cache_lines, accesses_);
+}
+
 double ShardsProfile::expected_error(std::uint64_t cache_lines) const {
-  return std::abs(half_[0]->miss_ratio(cache_lines, accesses_) - half_[1]->miss_ratio(cache_lines, accesses_)) / 2;
+  return stated_error(miss_ratio(cache_lines), half_miss_ratio(0, cache_lines), half_miss_ratio(1, cache_lines));
 }
 
 CacheConfig scale_cache(const CacheConfig& config, double rate) {
@@ -295,8 +299,12 @@ double MiniSimulations::miss_ratio(std::size_t cache) const {
   return minis_[cache].cache[0]->stats().miss_rate();
 }
 
+double MiniSimulations::half_miss_ratio(std::size_t cache, int half) const {
+  return minis_[cache].cache[1 + half]->stats().miss_rate();
+}
+
 double MiniSimulations::expected_error(std::size_t cache) const {
-  return std::abs(minis_[cache].cache[1]->stats().miss_rate() - minis_[cache].cache[2]->stats().miss_rate()) / 2;
+  return stated_error(miss_ratio(cache), half_miss_ratio(cache, 0), half_miss_ratio(cache, 1));
 }
 
 const CacheConfig& MiniSimulations::scaled(std::size_t cache) const { return minis_[cache].scaled; }

@@ -61,7 +61,94 @@ ReplayKinds kinds_for(SweepSource source) {
   return kinds;
 }
 
+// Simulates rows[i] for i in `indices` (ascending) exactly: one job per (layout, line size) of
+// them, which share the address and line streams, big ones split so every core has work.
+void simulate_rows(const std::string& trace_path, const SweepSpec& spec, const std::vector<LayoutSpec>& layouts,
+                   const TextureLevels& textures, const std::vector<std::size_t>& indices, SweepRows& rows,
+                   unsigned threads, bool show_progress, SweepRowSink* row_sink) {
+  if (indices.empty()) return;
+  std::vector<Job> groups;
+  for (const std::size_t r : indices) {
+    auto found = std::find_if(groups.begin(), groups.end(), [&](const Job& j) {
+      return j.layout == rows[r].layout_index && rows[j.rows.front()].cache.line_bytes == rows[r].cache.line_bytes;
+    });
+    if (found == groups.end()) {
+      groups.push_back({{}, rows[r].layout_index});
+      found = groups.end() - 1;
+    }
+    found->rows.push_back(r);
+  }
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  // Split big groups so every core has work; the split costs one more pass over the trace each.
+  std::vector<Job> jobs;
+  const std::size_t per_job = std::max<std::size_t>(1, (indices.size() + threads - 1) / threads);
+  for (const Job& group : groups)
+    for (std::size_t i = 0; i < group.rows.size(); i += per_job)
+      jobs.push_back({std::vector<std::size_t>(
+                          group.rows.begin() + static_cast<std::ptrdiff_t>(i),
+                          group.rows.begin() + static_cast<std::ptrdiff_t>(std::min(group.rows.size(), i + per_job))),
+                      group.layout});
+
+  std::optional<Progress> progress;
+  if (show_progress) progress.emplace("sweep (" + std::to_string(indices.size()) + " caches)", jobs.size());
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  const auto work = [&] {
+    while (true) {
+      const std::size_t j = next.fetch_add(1);
+      if (j >= jobs.size()) return;
+      try {
+        const Job& job = jobs[j];
+        CacheBankConfig bank;
+        bank.three_c = spec.three_c;
+        for (const std::size_t r : job.rows) {
+          switch (spec.source) {
+            case SweepSource::Texel:
+              bank.texture.push_back({rows[r].cache, layouts[job.layout]});
+              break;
+            case SweepSource::VertexBuffer:
+              bank.vertex_buffer.push_back({rows[r].cache, spec.stride});
+              break;
+            case SweepSource::Address:
+              bank.address.push_back(rows[r].cache);
+              break;
+          }
+        }
+        LiveBankSink sink(bank, textures);
+        replay_file(trace_path, sink, kinds_for(spec.source));
+        const auto& stats = spec.source == SweepSource::Texel          ? sink.texture_stats()
+                            : spec.source == SweepSource::VertexBuffer ? sink.vertex_buffer_stats()
+                                                                       : sink.address_stats();
+        for (std::size_t i = 0; i < job.rows.size(); ++i) rows[job.rows[i]].stats = stats[i];
+        if (row_sink) row_sink->done(rows, job.rows);
+        if (progress) progress->advance();
+      } catch (...) {
+        std::lock_guard lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+        next = jobs.size();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < std::min<std::size_t>(threads, jobs.size()); ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  if (progress) progress->finish();
+  if (failure) std::rethrow_exception(failure);
+}
+
 }  // namespace
+
+const char* sweep_method(std::span<const SweepRow> rows) {
+  bool estimated = false, simulated = false;
+  for (const SweepRow& row : rows) {
+    if (row.expected_error < 0) continue;  // not a sampled sweep's row
+    (row.sampled_as == "exact" ? simulated : estimated) = true;
+  }
+  if (!estimated) return "exact";
+  return simulated ? "sampled+exact-small-caches" : "sampled";
+}
 
 std::string sweep_layout_name(const SweepSpec& spec, std::size_t layout_index) {
   switch (spec.source) {
@@ -94,7 +181,6 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
   bool any_valid = false;
   const std::vector<LayoutSpec> layouts =
       spec.source == SweepSource::Texel ? spec.layouts : std::vector<LayoutSpec>{LayoutSpec{}};
-  std::vector<Job> groups;
   for (std::size_t l = 0; l < layouts.size(); ++l)
     for (const ReplacementPolicy policy : spec.policies)
       for (const std::uint32_t line : spec.lines)
@@ -115,95 +201,39 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
             row.cache = config;
             row.layout_index = l;
             row.layout = sweep_layout_name(spec, l);
-            // One job per (layout, line): they share the address and line streams and the profile.
-            auto found = std::find_if(groups.begin(), groups.end(), [&](const Job& j) {
-              return j.layout == l && result.rows[j.rows.front()].cache.line_bytes == line;
-            });
-            if (found == groups.end()) {
-              groups.push_back({{}, l});
-              found = groups.end() - 1;
-            }
-            found->rows.push_back(result.rows.size());
             result.rows.push_back(row);
           }
   if (!any_valid) throw InputError("sweep: no valid cache configuration among the combinations given");
   if (row_sink) row_sink->begin(result.rows.size());
   if (result.rows.empty()) return result;
+  // The source's records (0: the trace does not count them).
+  const std::uint64_t records = !summary.has_counts                         ? 0
+                                : spec.source == SweepSource::Texel        ? summary.texels
+                                : spec.source == SweepSource::VertexBuffer ? summary.vertices
+                                                                           : summary.addresses;
   // OPT buffers the whole line stream: refuse a trace too long for it before reading any of it.
-  if (summary.has_counts && std::any_of(result.rows.begin(), result.rows.end(), [](const SweepRow& r) {
+  if (records > 0 && std::any_of(result.rows.begin(), result.rows.end(), [](const SweepRow& r) {
         return r.cache.policy == ReplacementPolicy::Opt;
       }))
-    check_opt_capacity(spec.source == SweepSource::Texel          ? summary.texels
-                       : spec.source == SweepSource::VertexBuffer ? summary.vertices
-                                                                  : summary.addresses);
+    check_opt_capacity(records);
+  std::vector<std::size_t> simulate(result.rows.size());
+  std::iota(simulate.begin(), simulate.end(), std::size_t{0});
   if (spec.sample) {
-    run_sampled_rows(trace_path, spec, layouts, summary.metadata.textures, result.rows, show_progress);
+    simulate = run_sampled_rows(trace_path, spec, layouts, summary.metadata.textures, records, result.rows,
+                                show_progress);
     if (row_sink) {
-      std::vector<std::size_t> all(result.rows.size());
-      std::iota(all.begin(), all.end(), std::size_t{0});
-      row_sink->done(result.rows, all);
+      // The estimated rows are final now; the simulated ones follow as their jobs finish.
+      std::vector<std::size_t> estimated;
+      for (std::size_t r = 0, s = 0; r < result.rows.size(); ++r)
+        if (s < simulate.size() && simulate[s] == r)
+          ++s;
+        else
+          estimated.push_back(r);
+      if (!estimated.empty()) row_sink->done(result.rows, estimated);
     }
-    return result;
   }
-
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-  // Split big groups so every core has work; the split costs one more pass over the trace each.
-  std::vector<Job> jobs;
-  const std::size_t per_job = std::max<std::size_t>(1, (result.rows.size() + threads - 1) / threads);
-  for (const Job& group : groups)
-    for (std::size_t i = 0; i < group.rows.size(); i += per_job)
-      jobs.push_back({std::vector<std::size_t>(
-                          group.rows.begin() + static_cast<std::ptrdiff_t>(i),
-                          group.rows.begin() + static_cast<std::ptrdiff_t>(std::min(group.rows.size(), i + per_job))),
-                      group.layout});
-
-  std::optional<Progress> progress;
-  if (show_progress) progress.emplace("sweep (" + std::to_string(result.rows.size()) + " caches)", jobs.size());
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  const auto work = [&] {
-    while (true) {
-      const std::size_t j = next.fetch_add(1);
-      if (j >= jobs.size()) return;
-      try {
-        const Job& job = jobs[j];
-        CacheBankConfig bank;
-        bank.three_c = spec.three_c;
-        for (const std::size_t r : job.rows) {
-          switch (spec.source) {
-            case SweepSource::Texel:
-              bank.texture.push_back({result.rows[r].cache, layouts[job.layout]});
-              break;
-            case SweepSource::VertexBuffer:
-              bank.vertex_buffer.push_back({result.rows[r].cache, spec.stride});
-              break;
-            case SweepSource::Address:
-              bank.address.push_back(result.rows[r].cache);
-              break;
-          }
-        }
-        LiveBankSink sink(bank, summary.metadata.textures);
-        replay_file(trace_path, sink, kinds_for(spec.source));
-        const auto& stats = spec.source == SweepSource::Texel          ? sink.texture_stats()
-                            : spec.source == SweepSource::VertexBuffer ? sink.vertex_buffer_stats()
-                                                                       : sink.address_stats();
-        for (std::size_t i = 0; i < job.rows.size(); ++i) result.rows[job.rows[i]].stats = stats[i];
-        if (row_sink) row_sink->done(result.rows, job.rows);
-        if (progress) progress->advance();
-      } catch (...) {
-        std::lock_guard lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-        next = jobs.size();
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < std::min<std::size_t>(threads, jobs.size()); ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& t : pool) t.join();
-  if (progress) progress->finish();
-  if (failure) std::rethrow_exception(failure);
+  simulate_rows(trace_path, spec, layouts, summary.metadata.textures, simulate, result.rows, threads, show_progress,
+                row_sink);
   return result;
 }
 

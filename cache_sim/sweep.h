@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,20 @@ struct SweepShard {
 // "K/N" with 1 <= K <= N <= 65536; throws InputError naming --shard otherwise.
 SweepShard parse_sweep_shard(const std::string& text);
 
+// Where a sampled sweep simulates exactly instead, because a sample would state less error than
+// it has (sampled_sweep.h; the figures behind the defaults: docs/RELIABILITY.md, "Sampled
+// estimates state their true error").
+struct SampleGuards {
+  // A sweep of at most this many simulated accesses (the source's records x rows) runs exactly:
+  // on 2 cores that costs under a second more than the sample, and a trace that short has too few
+  // distinct lines for a 1% sample to hold more than a handful.
+  std::uint64_t exact_accesses = 64ull << 20;
+  // A row whose cache, scaled to the sample, holds fewer sampled lines than this (C x R < K) is
+  // simulated exactly: below a few lines the scaled cache's miss ratio is biased (a 1-line scaled
+  // cache stands for every cache up to 1/R lines), and the half-sample spread does not see it.
+  std::uint64_t min_sampled_lines = 32;
+};
+
 struct SweepSpec {
   SweepSource source = SweepSource::Texel;
   std::vector<std::uint64_t> sizes{16 * 1024};
@@ -47,8 +62,10 @@ struct SweepSpec {
   std::uint64_t seed = 1;
   bool three_c = true;
   SweepShard shard;
-  // Estimate every row from a spatially hashed sample of the lines instead (sampled_sweep.h).
+  // Estimate every row from a spatially hashed sample of the lines instead (sampled_sweep.h),
+  // except where its guards simulate exactly.
   std::optional<SampleSpec> sample;
+  SampleGuards sample_guards;
 };
 
 struct SweepRow {
@@ -57,8 +74,9 @@ struct SweepRow {
   CacheStats stats;
   std::size_t configuration = 0;  // index in the full configuration set (see SweepShard)
   std::size_t layout_index = 0;   // into SweepSpec::layouts (texel source)
-  // Sampled sweeps only: how the row was estimated ("shards", or "mini" and the scaled cache) and
-  // the expected error of its miss rate (< 0: exact).
+  // Sampled sweeps only: how the row was estimated ("shards", "mini" and the scaled cache, or
+  // "exact" where the guards of sampled_sweep.h simulate it) and the error its miss rate states
+  // (0 for exact rows; < 0: not a sampled sweep).
   std::string sampled_as = {};
   double expected_error = -1;
 };
@@ -72,6 +90,11 @@ struct SweepResult {
   std::vector<std::string> skipped;  // impossible combinations, described (this shard's)
   std::size_t configurations = 0;    // in the full set, impossible ones included
 };
+
+// How a sweep's rows were found: "exact" (no --sample, or every row simulated by the guards of
+// SampleGuards), "sampled" (every row estimated) or "sampled+exact-small-caches" (some rows under
+// SampleGuards::min_sampled_lines simulated).
+const char* sweep_method(std::span<const SweepRow> rows);
 
 // The layout column of the rows of SweepSpec::layouts[layout_index] (texel source; a layout's
 // name), and of every row of the other sources ("stride32" for vertex buffers, "-" for addresses).

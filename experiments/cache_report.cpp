@@ -48,8 +48,13 @@ void add_sweep_parameters(const SweepSpec& spec, std::vector<std::pair<std::stri
     parameters.emplace_back("sampling", describe(*spec.sample) +
                                             " of the lines by spatial hash: fully associative LRU by SHARDS "
                                             "(Waldspurger et al. 2015), other caches by miniature simulation "
-                                            "(Waldspurger et al. 2017); expected error = half the difference of "
-                                            "two independent half samples");
+                                            "(Waldspurger et al. 2017); expected error = |A - B| + |full - (A + B) / 2| "
+                                            "of two independent half samples A, B; simulated exactly instead: the whole "
+                                            "sweep when records x rows <= " +
+                                            std::to_string(spec.sample_guards.exact_accesses) +
+                                            ", a row whose scaled cache holds under " +
+                                            std::to_string(spec.sample_guards.min_sampled_lines) +
+                                            " sampled lines");
 }
 
 Table byte_cache_table(const std::string& title, std::vector<std::pair<std::string, TableCell>> parameters,
@@ -74,6 +79,7 @@ Table byte_cache_table(const std::string& title, std::vector<std::pair<std::stri
   // A sampled sweep (sweep --sample) says how each row was estimated and its expected error.
   const bool sampled = std::any_of(rows.begin(), rows.end(), [](const SweepRow& r) { return r.expected_error >= 0; });
   if (sampled) {
+    t.parameters.emplace_back("method", sweep_method(rows));
     t.columns.push_back({"estimated_by", "estimated by", 0});
     t.columns.push_back({"expected_error", "expected error", 5});
   }

@@ -5,7 +5,7 @@
 // just past a stated limit to 2^63 - 1. A loader must answer each in a moment with an InputError
 // naming the file, or with a mesh it actually read (tests/scenes/header_counts_test.cpp); a loop
 // that trusts the count instead runs for minutes or for ever (a 185-byte PLY file ran past 20 s).
-// The trace formats' cases are in hostile_trace_headers.h.
+// The trace formats' cases are in tests/traces/header_counts_test.cpp.
 #pragma once
 
 #include <bit>
