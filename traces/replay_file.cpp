@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <string_view>
 
 #include "core/error.h"
 #include "core/input_guard.h"
@@ -83,7 +84,8 @@ class FilterSink final : public EventSink {
 };
 }  // namespace
 
-void replay_file(const std::string& path, EventSink& sink, ReplayKinds kinds, Progress* progress) {
+namespace {
+void replay_any_format(const std::string& path, EventSink& sink, ReplayKinds kinds, Progress* progress) {
   switch (detect_trace_format(path)) {
     case TraceFileFormat::Container: {
       TraceReader reader(path);
@@ -100,6 +102,18 @@ void replay_file(const std::string& path, EventSink& sink, ReplayKinds kinds, Pr
       import_din(path, filter);
       break;
     }
+  }
+}
+}  // namespace
+
+void replay_file(const std::string& path, EventSink& sink, ReplayKinds kinds, Progress* progress) {
+  try {
+    replay_any_format(path, sink, kinds, progress);
+  } catch (const InputError& e) {
+    // A sink refusing a record (a texel outside the textures the metadata lists) does not know the
+    // file; the readers' own errors already start with it.
+    if (std::string_view(e.what()).starts_with(path)) throw;
+    throw_in_file(path, e.what());
   }
 }
 

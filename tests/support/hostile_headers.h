@@ -11,6 +11,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,10 @@ struct HostileFile {
   std::string file_name;
   std::string bytes;
 };
+
+// GoogleTest prints a test's parameter beside its name (and ctest lists it): the name, not the
+// struct's bytes.
+inline void PrintTo(const HostileFile& file, std::ostream* out) { *out << file.name; }
 
 // Count magnitudes: just past 2^16 (the bound on records of no bytes), a million, 2^31, four
 // billion, 2^32 - 1 and 2^63 - 1. Small enough for the loaders' integer types, or just beyond them.
