@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdint>
 #include <numeric>
+#include <span>
 #include <string>
 
 #include "core/error.h"
@@ -19,6 +20,12 @@ namespace {
 
 constexpr int kCaches = 3;                 // sizes k-1, k, k+1
 constexpr std::int64_t kStripCost = 6000;  // 6 bytes per strip, scaled by 1000
+// The partners y of a face's vertex: every face of a vertex in at most kAllPartnersDegree faces
+// (any well-formed mesh: the paper's rule), else the faces of the vertex within kNearWindow
+// positions of x and kFarPartners spread over the rest (see best_from).
+constexpr std::size_t kAllPartnersDegree = 32;
+constexpr std::int64_t kNearWindow = 8;
+constexpr std::size_t kFarPartners = 8;
 
 // The FIFO of the short re-simulations, as insertion time stamps (a vertex is resident while fewer
 // than `cap` misses happened since it was inserted): O(1) per access for any cache size. clear()
@@ -528,12 +535,33 @@ class Local {
       }
     }
     const std::uint32_t* v = idx_ + 3 * std::size_t(f);
-    for (int i = 0; i < 3; ++i)
-      for (const std::uint32_t g : t_.faces_of_vertex(v[i])) {
-        if (face_mark_[g] == mark_) continue;
-        face_mark_[g] = mark_;
-        consider(pos_[g]);
+    auto consider_face = [&](std::uint32_t g) {
+      if (face_mark_[g] == mark_) return;
+      face_mark_[g] = mark_;
+      consider(pos_[g]);
+    };
+    for (int i = 0; i < 3; ++i) {
+      const std::span<const std::uint32_t> faces = t_.faces_of_vertex(v[i]);
+      if (faces.size() <= kAllPartnersDegree) {
+        for (const std::uint32_t g : faces) consider_face(g);
+        continue;
       }
+      // A vertex in many faces (a fan's centre, a non-manifold edge, a mesh of few vertices):
+      // trying every face of it makes one x cost O(degree) evaluations and a pass O(m * degree),
+      // a fan of 3,000 faces then spends the whole time budget. Bounded instead: the faces of v
+      // near x in the order (the partners of the short moves, which do most of the gain) and a
+      // stride through the rest (far moves), its start turning with x so that successive passes
+      // reach different faces.
+      const std::int64_t lo = std::max<std::int64_t>(0, std::int64_t(x) - kNearWindow);
+      const std::int64_t hi = std::min<std::int64_t>(std::int64_t(m_) - 1, std::int64_t(x) + kNearWindow);
+      for (std::int64_t q = lo; q <= hi; ++q) {
+        const std::uint32_t g = F_[std::size_t(q)];
+        const std::uint32_t* w = idx_ + 3 * std::size_t(g);
+        if (w[0] == v[i] || w[1] == v[i] || w[2] == v[i]) consider_face(g);
+      }
+      const std::size_t stride = faces.size() / kFarPartners;
+      for (std::size_t j = (x + stats.passes) % stride; j < faces.size(); j += stride) consider_face(faces[j]);
+    }
     return best;
   }
 

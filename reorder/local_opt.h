@@ -11,7 +11,9 @@
 //   Insert1(x, y)  moves F[x] next to F[y] (just after it if y > x, just before it if y < x);
 //   Insert2(x, y)  moves F[x], F[x+1] next to F[y] likewise.
 // x visits every face in a seeded random order; y ranges over the faces sharing a vertex with
-// F[x] and F[x-1], F[x+1]; the best beneficial perturbation is chased (x <- y, y <- z) until it
+// F[x] and F[x-1], F[x+1] (for a vertex in more than 32 faces, a fan's centre, only those within
+// 8 positions of x and 8 spread over the rest, so that a pass stays near linear on non-manifold
+// fans and meshes of few vertices); the best beneficial perturbation is chased (x <- y, y <- z) until it
 // is locally best, then applied. Costs are re-evaluated from per-face miss bits and access lists
 // stored for the forward and the reverse traversal (3 cache sizes each): the cache state before
 // a slice point is rebuilt from the last k stored misses, the re-simulation runs on time-stamped
