@@ -16,7 +16,11 @@ Long calls release the GIL, so threads run them in parallel.
 """
 
 from ._columns import Columns
-from ._rastrace import (
+from ._import_check import check_dependencies as _check_dependencies
+
+_check_dependencies()
+
+from ._rastrace import (  # noqa: E402 (after the check, which explains a failed import)
     InputError,
     Mesh,
     Scene,

@@ -29,7 +29,7 @@ def test_pip_install_of_the_built_module_imports_in_a_clean_interpreter(tmp_path
                     "--no-cache-dir", "--no-compile", "--target", str(target), str(REPOSITORY)],
                    check=True, capture_output=True, env=env, cwd=tmp_path)
     assert sorted(p.name for p in (target / "rastrace").iterdir() if p.suffix != ".so") == [
-        "__init__.py", "_columns.py", "_rastrace.pyi", "py.typed"]
+        "__init__.py", "_build.py", "_columns.py", "_import_check.py", "_rastrace.pyi", "py.typed"]
     probe = ("import sys; sys.path.insert(0, sys.argv[1]); import rastrace; "
              "mesh = rastrace.load_mesh('builtin:bunny'); "
              "print(rastrace.__file__, rastrace.__version__, mesh.face_count)")
