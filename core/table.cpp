@@ -1,6 +1,8 @@
 #include "core/table.h"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <cstdio>
 #include <stdexcept>
 
@@ -123,6 +125,7 @@ std::string markdown(const Table& table) {
 
 std::string csv(const Table& table) {
   std::string out = "# " + table.title + "\n";
+  if (!table.kind.empty()) out += "# kind: " + table.kind + "\n";
   for (const auto& [key, value] : table.parameters) out += "# " + key + ": " + cell_text(value, 6) + "\n";
   for (std::size_t c = 0; c < table.columns.size(); ++c) {
     if (c) out += ',';
@@ -169,6 +172,7 @@ std::string latex(const Table& table) {
 void append_json_rows(const Table& table, nlohmann::ordered_json& rows) {
   for (const auto& row : table.rows) {
     nlohmann::ordered_json object = nlohmann::ordered_json::object();
+    if (!table.kind.empty()) object["kind"] = table.kind;
     for (std::size_t c = 0; c < row.size(); ++c) object[table.columns[c].key] = cell_json(row[c]);
     for (const auto& [key, value] : table.parameters)
       if (!object.contains(key)) object[key] = cell_json(value);
@@ -176,9 +180,34 @@ void append_json_rows(const Table& table, nlohmann::ordered_json& rows) {
   }
 }
 
+// The keys of a table's JSON rows, in order.
+std::vector<std::string> json_keys(const Table& table) {
+  std::vector<std::string> keys;
+  for (const TableColumn& column : table.columns) keys.push_back(column.key);
+  for (const auto& [key, value] : table.parameters)
+    if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+  return keys;
+}
+
+// One schema per kind: a consumer splitting the rows by "kind" gets tables of fixed keys.
+void check_kinds(std::span<const Table> tables) {
+  std::map<std::string, std::vector<std::string>> keys_of_kind;
+  for (const Table& table : tables) {
+    if (table.kind.empty()) {
+      if (tables.size() > 1)
+        throw std::logic_error("table '" + table.title + "' has no kind in an output of several tables");
+      continue;
+    }
+    const auto [it, inserted] = keys_of_kind.emplace(table.kind, json_keys(table));
+    if (!inserted && it->second != json_keys(table))
+      throw std::logic_error("tables of kind '" + table.kind + "' with different keys ('" + table.title + "')");
+  }
+}
+
 }  // namespace
 
 std::string render_tables(std::span<const Table> tables, TableFormat format) {
+  check_kinds(tables);
   if (format == TableFormat::Json) {
     nlohmann::ordered_json rows = nlohmann::ordered_json::array();
     for (const Table& table : tables) append_json_rows(table, rows);

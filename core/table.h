@@ -41,6 +41,10 @@ struct TableColumn {
 
 struct Table {
   std::string title;
+  // What one row is, in snake_case ("texture_cache", "frame_traffic"): each JSON row carries it as
+  // "kind", so that an output of several tables splits into one schema per kind. Every table of
+  // such an output must have one, and tables of one kind the same keys.
+  std::string kind;
   std::vector<std::pair<std::string, TableCell>> parameters;  // stated in every format
   std::vector<TableColumn> columns;
   std::vector<std::vector<TableCell>> rows;  // each row has one cell per column
@@ -48,8 +52,10 @@ struct Table {
   void add_row(std::vector<TableCell> row);  // throws std::logic_error on a wrong cell count
 };
 
-// Several tables in one output: text formats separate them by a blank line; JSON gives one
-// array holding every table's rows.
+// Several tables in one output: text formats separate them by a blank line (CSV states each
+// table's kind in its comment lines); JSON gives one array holding every table's rows, each with
+// its table's "kind". Throws std::logic_error when several tables lack a kind, or when two tables
+// of one kind have different keys.
 std::string render_tables(std::span<const Table> tables, TableFormat format);
 std::string render_table(const Table& table, TableFormat format);
 

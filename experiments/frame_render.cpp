@@ -157,6 +157,7 @@ Frame render_frame(const FrameSpec& spec) {
 
   Table& table = frame.table;
   table.title = "Frame: " + scene.name;
+  table.kind = "frame";
   table.parameters = {{"scene", flags.scene},
                       {"size", std::to_string(scene.width) + "x" + std::to_string(scene.height)},
                       {"order", vipm ? "vipm:" + spec.vipm : flags.order},
@@ -219,17 +220,20 @@ Frame render_frame(const FrameSpec& spec) {
     TableParameters parameters = {{"scene", flags.scene}, {"raster", flags.raster}, {"order", flags.order}};
     if (spec.frames > 1) parameters.emplace_back("frames", static_cast<std::uint64_t>(spec.frames));  // totals
     frame.hierarchy.push_back(hierarchy_table(std::move(parameters), hierarchies.front(), hierarchy_sink.hierarchy(0)));
+    frame.hierarchy.back().kind = "hierarchy_level";
   }
   if (miss_map) {
     if (miss_map->map().stats.accesses == 0)
       throw InputError("--miss-map: the frame read no texels (the scene has no textured draw)");
     frame.miss_map = miss_map->map();
   }
-  if (!hierarchies.empty() && spec.frames > 1)
+  if (!hierarchies.empty() && spec.frames > 1) {
     frame.hierarchy.push_back(per_frame_table({{"scene", flags.scene}, {"raster", flags.raster}, {"order", flags.order},
                                                {"camera", describe_camera(scene)},
                                                {"hierarchy", describe(hierarchies.front().hierarchy)}},
                                               {"hierarchy"}, frame_counts));
+    frame.hierarchy.back().kind = "hierarchy_frame";
+  }
   return frame;
 }
 

@@ -93,9 +93,10 @@ std::vector<Table> replay_tables(const std::string& trace, const std::vector<std
     auto p = parameters;
     p.emplace_back("vertex_cache_per_draw", keep_vertex_cache ? "kept" : "flushed");
     tables.push_back(vertex_cache_table("Post-transform vertex caches", p, rows));
+    tables.back().kind = "vertex_cache";
   }
   const auto add_byte_table = [&](std::vector<SweepRow>& rows, const std::vector<CacheStats>& stats,
-                                  const char* title, const char* source) {
+                                  const char* title, const char* source, const char* kind) {
     if (rows.empty()) return;
     for (std::size_t i = 0; i < rows.size(); ++i) rows[i].stats = stats[i];
     auto p = parameters;
@@ -121,15 +122,23 @@ std::vector<Table> replay_tables(const std::string& trace, const std::vector<std
     else
       for (SweepRow& r : rows) r.layout += " seed=" + std::to_string(r.cache.seed);
     tables.push_back(byte_cache_table(title, p, rows, source));
+    tables.back().kind = kind;
   };
-  add_byte_table(texture_rows, sink.texture_stats(), "Texture caches", "texel");
-  add_byte_table(vertex_buffer_rows, sink.vertex_buffer_stats(), "Vertex buffer caches", "vertex");
-  add_byte_table(address_rows, sink.address_stats(), "Address caches", "address");
-  if (!bank.framebuffer.empty())
+  add_byte_table(texture_rows, sink.texture_stats(), "Texture caches", "texel", "texture_cache");
+  add_byte_table(vertex_buffer_rows, sink.vertex_buffer_stats(), "Vertex buffer caches", "vertex", "vertex_buffer_cache");
+  add_byte_table(address_rows, sink.address_stats(), "Address caches", "address", "address_cache");
+  if (!bank.framebuffer.empty()) {
     tables.push_back(framebuffer_cache_table(parameters, bank.framebuffer, sink.framebuffer_stats()));
-  if (hierarchies.size() > first_sectored)
+    tables.back().kind = "framebuffer_cache";
+  }
+  if (hierarchies.size() > first_sectored) {
     tables.push_back(sectored_cache_table(parameters, hierarchies, hierarchy_sink, first_sectored));
-  if (first_sectored == 1) tables.push_back(hierarchy_table(parameters, hierarchies.front(), hierarchy_sink.hierarchy(0)));
+    tables.back().kind = "sectored_cache";
+  }
+  if (first_sectored == 1) {
+    tables.push_back(hierarchy_table(parameters, hierarchies.front(), hierarchy_sink.hierarchy(0)));
+    tables.back().kind = "hierarchy_level";
+  }
   return tables;
 }
 

@@ -130,13 +130,16 @@ Table frame_experiment_table(const TextureExperiment& experiment, const std::vec
                                                                {"hiz", experiment.render.hiz ? "on" : "off"}};
   if (!experiment.render.size.empty()) parameters.emplace_back("size", experiment.render.size);
   for (auto& parameter : frame_cache_parameters(caches)) parameters.push_back(std::move(parameter));
-  return frame_traffic_table("Frame traffic per ordering: " + experiment.render.scene, std::move(parameters),
-                             frame_traffic_rows(runs));
+  Table table = frame_traffic_table("Frame traffic per ordering: " + experiment.render.scene, std::move(parameters),
+                                    frame_traffic_rows(runs));
+  table.kind = "frame_traffic";
+  return table;
 }
 
 Table texture_experiment_table(const TextureExperiment& experiment, const std::vector<TextureRun>& runs) {
   Table table;
   table.title = experiment.title;
+  table.kind = "texture_cache";
   table.parameters = {
       {"scene", experiment.render.scene},
       {"filter", experiment.render.filter},

@@ -42,6 +42,7 @@ Table vcache_model_table(const Mesh& mesh, const std::string& mesh_spec, const V
   const unsigned target = spec.target ? spec.target : 16;
   Table table;
   table.title = "Vertex reuse models: " + mesh_spec;
+  table.kind = "vertex_reuse_model";
   table.parameters = {{"mesh", mesh_spec},
                       {"mesh_faces", mesh.face_count()},
                       {"mesh_vertices", mesh.vertex_count()},
@@ -127,6 +128,7 @@ ModelTableAxes model_table_axes(const Table& model_table) {
 Table vcache_model_pivot(const Table& model_table) {
   const auto [algo, model, acmr, algorithms, models] = model_table_axes(model_table);
   Table pivot;
+  pivot.kind = "vertex_cache_by_model";
   pivot.title = "ACMR (shader invocations per triangle) by model, rank in brackets: " +
                 model_table.title.substr(model_table.title.find(':') + 2);
   pivot.parameters = model_table.parameters;

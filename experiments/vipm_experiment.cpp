@@ -162,6 +162,7 @@ double lod_change_indices_per_collapse(const VipmExperiment& e, const std::strin
 Table vipm_lod_table(const VipmExperiment& e) {
   Table table;
   table.title = "VIPM per LoD: " + e.mesh;
+  table.kind = "vipm_lod";
   table.parameters = parameters(e);
   table.columns = {{"method", "method", 0},
                    {"lod", "LoD", 0},
@@ -185,6 +186,7 @@ Table vipm_lod_table(const VipmExperiment& e) {
 Table vipm_summary_table(const VipmExperiment& e) {
   Table table;
   table.title = "VIPM summary: " + e.mesh;
+  table.kind = "vipm_summary";
   table.parameters = parameters(e);
   table.columns = {{"method", "method", 0},
                    {"index_bits", "index bits", 0},
@@ -267,6 +269,7 @@ static std::string format_quality_value(double value, const std::string& unit) {
 Table vipm_forsyth_table(const VipmExperiment& e) {
   Table table;
   table.title = "Forsyth's Table 4.1.1 beside the measurements: " + e.mesh;
+  table.kind = "vipm_forsyth";
   table.parameters = parameters(e);
   const std::vector<ForsythQuality> qualities = forsyth_qualities(e);
   table.parameters.emplace_back("agreement", forsyth_agreement_rule());

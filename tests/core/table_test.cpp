@@ -47,9 +47,36 @@ TEST(Table, JsonRowsCarryColumnsAndParametersWithTypes) {
   EXPECT_EQ(rows[1]["policy"], "fifo");
 }
 
-TEST(Table, SeveralTablesShareOneJsonArray) {
-  const Table tables[] = {sample_table(), sample_table()};
-  EXPECT_EQ(nlohmann::json::parse(render_tables(tables, TableFormat::Json)).size(), 4u);
+TEST(Table, SeveralTablesShareOneJsonArrayEachRowNamingItsKind) {
+  Table first = sample_table(), second = sample_table();
+  first.kind = "vertex_cache";
+  second.kind = "summary";
+  second.columns.push_back({"extra", "", 0});
+  for (auto& row : second.rows) row.emplace_back(7);
+  const Table tables[] = {first, second};
+  const auto rows = nlohmann::ordered_json::parse(render_tables(tables, TableFormat::Json));
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(rows[0].begin().key(), "kind");
+  EXPECT_EQ(rows[1]["kind"], "vertex_cache");
+  EXPECT_EQ(rows[2]["kind"], "summary");
+  EXPECT_FALSE(rows[1].contains("extra"));
+  EXPECT_EQ(rows[3]["extra"], 7);
+  const std::string csv = render_tables(tables, TableFormat::Csv);
+  EXPECT_NE(csv.find("# kind: vertex_cache\n"), std::string::npos);
+  EXPECT_NE(csv.find("# kind: summary\n"), std::string::npos);
+}
+
+TEST(Table, SeveralTablesWithoutKindsOrOneKindOfTwoSchemasAreRejected) {
+  const Table unnamed[] = {sample_table(), sample_table()};
+  EXPECT_THROW(render_tables(unnamed, TableFormat::Json), std::logic_error);
+  EXPECT_THROW(render_tables(unnamed, TableFormat::Markdown), std::logic_error);
+  Table first = sample_table(), second = sample_table();
+  first.kind = second.kind = "same";
+  EXPECT_NO_THROW(render_tables(std::vector<Table>{first, second}, TableFormat::Json));
+  second.parameters.emplace_back("seed", 3);
+  EXPECT_THROW(render_tables(std::vector<Table>{first, second}, TableFormat::Json), std::logic_error);
+  // One table alone needs no kind: its rows are one schema.
+  EXPECT_NO_THROW(render_table(sample_table(), TableFormat::Json));
 }
 
 TEST(Table, RowWithWrongCellCountIsRejected) {

@@ -1,5 +1,6 @@
 // Yang, Mitra and Huang's texture experiment: texture-grouped strips against strips on the
 // four-colour bunny, determinism, and live simulation against replay.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -90,6 +91,31 @@ TEST(TextureExperiment, LiveRenderAgreesWithTheSweptTraceToTheMiss) {
     for (const char* key : {"vertex_bytes", "depth_read_bytes", "depth_write_bytes", "colour_write_bytes", "overdraw"})
       EXPECT_EQ(live[0][key], swept[1][key]) << scene << " " << order << " " << key;
   }
+}
+
+TEST(TextureExperiment, JsonRowsSplitByKindIntoOneSchemaPerTable) {
+  // Texture-cache rows and frame-traffic rows share one array: each names its kind, and every
+  // row of a kind has the same keys in the same order (what pandas needs for one DataFrame each).
+  const auto rows = nlohmann::ordered_json::parse(
+      run({"texsweep", "builtin:grid", "--order", "tipsy,texgroup", "--base", "tipsy", "--raster", "scanline,tiled8",
+           "--tcache", "size=1KiB..4KiB,assoc=full,policy=fifo/lru,layout=linear/morton", "--format", "json"}));
+  std::map<std::string, std::vector<std::string>> keys_of_kind;
+  std::map<std::string, int> rows_of_kind;
+  for (const auto& row : rows) {
+    ASSERT_TRUE(row.contains("kind")) << row.dump();
+    std::vector<std::string> keys;
+    for (auto it = row.begin(); it != row.end(); ++it) keys.push_back(it.key());
+    const std::string kind = row["kind"];
+    ++rows_of_kind[kind];
+    const auto [known, inserted] = keys_of_kind.emplace(kind, keys);
+    EXPECT_EQ(known->second, keys) << kind;
+  }
+  // 2 orders x 2 rasters: 3 sizes x 2 policies x 2 layouts texture-cache rows each, one frame row each.
+  EXPECT_EQ(rows_of_kind, (std::map<std::string, int>{{"frame_traffic", 4}, {"texture_cache", 48}}));
+  EXPECT_NE(std::find(keys_of_kind["texture_cache"].begin(), keys_of_kind["texture_cache"].end(), "miss_rate"),
+            keys_of_kind["texture_cache"].end());
+  EXPECT_NE(std::find(keys_of_kind["frame_traffic"].begin(), keys_of_kind["frame_traffic"].end(), "overdraw"),
+            keys_of_kind["frame_traffic"].end());
 }
 
 TEST(TextureExperiment, RerunningTheSameCommandGivesByteIdenticalTables) {
