@@ -26,6 +26,14 @@ constexpr std::int64_t kStripCost = 6000;  // 6 bytes per strip, scaled by 1000
 constexpr std::size_t kAllPartnersDegree = 32;
 constexpr std::int64_t kNearWindow = 8;
 constexpr std::size_t kFarPartners = 8;
+// An evaluation re-simulates from a slice point until the caches agree with the stored ones again.
+// Around a vertex in many faces they may never agree: on a fan every face re-reads the centre, a
+// FIFO evicts it every k misses, and a perturbation shifts that phase for the rest of the order
+// (24 vertices under a FIFO of 16 likewise), so each evaluation re-simulated the whole order. For
+// perturbations of such faces the evaluation stops after this many faces without agreement, with
+// the change so far: an estimate, which apply() checks against the true cost before keeping the
+// perturbation. Faces of well-formed meshes are never crowded, and their evaluations stay exact.
+constexpr std::int64_t kCrowdedEvaluationFaces = 256;
 
 // The FIFO of the short re-simulations, as insertion time stamps (a vertex is resident while fewer
 // than `cap` misses happened since it was inserted): O(1) per access for any cache size. clear()
@@ -147,6 +155,10 @@ class Local {
     fwd_cost_.assign(t_.face_count, 0);
     rev_cost_.assign(t_.face_count, 0);
     face_mark_.assign(t_.face_count, 0);
+    crowded_.assign(t_.face_count, 0);
+    for (std::uint32_t f = 0; f < t_.face_count; ++f)
+      for (int i = 0; i < 3; ++i)
+        if (t_.faces_of_vertex(idx_[3 * std::size_t(f) + i]).size() > kAllPartnersDegree) crowded_[f] = 1;
     recompute();
   }
 
@@ -440,7 +452,10 @@ class Local {
     load(j, false);  // before F' position j: untouched prefix, so F's own state
     unsigned sync[kCaches] = {0, 0, 0};
     int sync_segment = s;
+    const std::int64_t give_up = crowded_[F_[p.x]] || crowded_[F_[p.y]] ? kCrowdedEvaluationFaces : std::int64_t(m_);
+    std::int64_t unsynced = 0;
     for (; j < std::int64_t(m_); ++j) {
+      if (++unsynced > give_up) break;  // an estimate: apply() checks the true cost
       while (s + 1 < count && seg[s + 1].start <= j) ++s;
       if (s != sync_segment) {
         sync_segment = s;
@@ -491,6 +506,7 @@ class Local {
         }
         j = end - 1;
       }
+      unsynced = 0;
     }
     return delta;
   }
@@ -671,6 +687,7 @@ class Local {
   std::uint32_t clock_[kCaches] = {1u << 20, 1u << 20, 1u << 20};
   StampFifo fifo_[kCaches];
   std::vector<std::uint32_t> face_mark_;
+  std::vector<std::uint8_t> crowded_;  // the face has a vertex in more than kAllPartnersDegree faces
   std::uint32_t mark_ = 0;
   std::vector<std::uint32_t> old_, new_;  // apply()'s scratch: F[lo..hi] before and after
   std::int64_t cost_ = 0;
