@@ -128,7 +128,8 @@ std::vector<std::size_t> run_sampled_rows(const std::string& trace_path, const S
     const bool stack = row.cache.policy == ReplacementPolicy::Lru && row.cache.assoc == 0;
     // A fixed rate's small caches are known before the pass; a fixed size's rate only falls, so
     // its rows are checked again at the final rate below.
-    if (double(row.cache.lines()) * sample.rate < double(guards.min_sampled_lines))
+    if (double(row.cache.lines()) * sample.rate < double(guards.min_sampled_lines) ||
+        (row.cache.assoc != 0 && row.cache.assoc < guards.min_sampled_assoc))
       simulate_exactly(r);
     else
       (stack ? g->shards_rows : g->mini_rows).push_back(r);

@@ -117,21 +117,27 @@ std::string describe(const SampleSpec& spec) {
                         : std::string("fixed rate ") + rate;
 }
 
-// One SHARDS estimate over the lines whose hash lies in [lo, hi).
+// One SHARDS estimate over the lines whose hash lies in [lo, hi) (and, for a part sample, whose
+// hash's low bits are the part's number).
 struct ShardsProfile::Estimate {
   std::uint64_t lo, hi;
-  bool to_end;  // hi is 2^64 (rate 1 or the upper half at rate 1)
+  bool to_end;  // hi is 2^64 (rate 1)
+  int part = -1;  // -1: every line in range; else the part's number
   std::uint64_t max_lines;
   LruStackProfile stack;
   std::priority_queue<std::pair<std::uint64_t, std::uint64_t>> by_hash;  // fixed size: (hash, line)
   std::vector<double> histogram;  // fixed rate: by sampled distance; fixed size: buckets of scaled distance
   double cold = 0, total = 0, scale = 1;
 
-  Estimate(std::uint64_t lo_, std::uint64_t hi_, bool to_end_, std::uint64_t max)
-      : lo(lo_), hi(hi_), to_end(to_end_), max_lines(max) {}
+  Estimate(std::uint64_t lo_, std::uint64_t hi_, bool to_end_, std::uint64_t max, int part_ = -1)
+      : lo(lo_), hi(hi_), to_end(to_end_), part(part_), max_lines(max) {}
 
-  double rate() const { return ((to_end ? kTwo64 : double(hi)) - double(lo)) / kTwo64; }
-  bool takes(std::uint64_t h) const { return h >= lo && (to_end || h < hi); }
+  double rate() const {
+    return ((to_end ? kTwo64 : double(hi)) - double(lo)) / kTwo64 / (part < 0 ? 1.0 : double(kSampleParts));
+  }
+  bool takes(std::uint64_t h) const {
+    return h >= lo && (to_end || h < hi) && (part < 0 || int(h & (kSampleParts - 1)) == part);
+  }
 
   void access(std::uint64_t line, std::uint64_t h) {
     if (!takes(h)) return;
@@ -191,14 +197,25 @@ struct ShardsProfile::Estimate {
   }
 };
 
+double stated_error(double full, std::span<const double> parts) {
+  static_assert(kSampleParts == 8, "the quantile below is for 7 degrees of freedom");
+  constexpr double kStudent995 = 3.499;  // Student's t, 99.5% quantile, 7 degrees of freedom
+  const double k = double(parts.size());
+  double mean = 0;
+  for (const double p : parts) mean += p;
+  mean /= k;
+  double squares = 0;
+  for (const double p : parts) squares += (p - mean) * (p - mean);
+  const double deviation = std::sqrt(squares / (k - 1));
+  return kStudent995 * deviation / std::sqrt(k) + std::abs(full - mean);
+}
+
 ShardsProfile::ShardsProfile(SampleSpec spec) : spec_(spec) {
   const std::uint64_t threshold = sample_threshold(spec.rate);
   const bool all = spec.rate >= 1.0;
-  const std::uint64_t half = all ? std::uint64_t{1} << 63 : threshold / 2;
-  const std::uint64_t half_max = spec.max_lines ? std::max<std::uint64_t>(1, spec.max_lines / 2) : 0;
+  const std::uint64_t part_max = spec.max_lines ? std::max<std::uint64_t>(1, spec.max_lines / kSampleParts) : 0;
   full_ = std::make_unique<Estimate>(0, threshold, all, spec.max_lines);
-  half_[0] = std::make_unique<Estimate>(0, half, false, half_max);
-  half_[1] = std::make_unique<Estimate>(half, threshold, all, half_max);
+  for (int p = 0; p < kSampleParts; ++p) part_[p] = std::make_unique<Estimate>(0, threshold, all, part_max, p);
 }
 
 ShardsProfile::~ShardsProfile() = default;
@@ -220,8 +237,7 @@ void ShardsProfile::access_sampled(const SampledBatch& batch) {
     const std::uint64_t h = hashes[i];
     if (!full_->takes(h)) continue;  // a batch sampled at a higher rate, or a fixed size's fallen rate
     full_->access(lines[i], h);
-    half_[0]->access(lines[i], h);
-    half_[1]->access(lines[i], h);
+    part_[h & (kSampleParts - 1)]->access(lines[i], h);
   }
 }
 
@@ -231,12 +247,14 @@ std::uint64_t ShardsProfile::tracked_lines() const { return full_->stack.live_li
 
 double ShardsProfile::miss_ratio(std::uint64_t cache_lines) const { return full_->miss_ratio(cache_lines, accesses_); }
 
-double ShardsProfile::half_miss_ratio(int half, std::uint64_t cache_lines) const {
-  return half_[half]->miss_ratio(cache_lines, accesses_);
+double ShardsProfile::part_miss_ratio(int part, std::uint64_t cache_lines) const {
+  return part_[part]->miss_ratio(cache_lines, accesses_);
 }
 
 double ShardsProfile::expected_error(std::uint64_t cache_lines) const {
-  return stated_error(miss_ratio(cache_lines), half_miss_ratio(0, cache_lines), half_miss_ratio(1, cache_lines));
+  double parts[kSampleParts];
+  for (int p = 0; p < kSampleParts; ++p) parts[p] = part_miss_ratio(p, cache_lines);
+  return stated_error(miss_ratio(cache_lines), parts);
 }
 
 CacheConfig scale_cache(const CacheConfig& config, double rate) {
@@ -253,11 +271,11 @@ CacheConfig scale_cache(const CacheConfig& config, double rate) {
 
 struct MiniSimulations::Mini {
   CacheConfig scaled;
-  std::unique_ptr<ByteCache> cache[3];  // full rate, half A, half B (null: the half scales to nothing)
+  std::unique_ptr<ByteCache> cache[1 + kSampleParts];  // full rate, then each part
 };
 
 MiniSimulations::MiniSimulations(const std::vector<CacheConfig>& caches, double rate)
-    : rate_(rate), threshold_(sample_threshold(rate)), half_threshold_(rate >= 1.0 ? std::uint64_t{1} << 63 : threshold_ / 2) {
+    : rate_(rate), threshold_(sample_threshold(rate)) {
   for (const CacheConfig& config : caches) {
     validate(config);
     if (config.policy == ReplacementPolicy::Opt)
@@ -265,7 +283,8 @@ MiniSimulations::MiniSimulations(const std::vector<CacheConfig>& caches, double 
     Mini mini;
     mini.scaled = scale_cache(config, rate);
     mini.cache[0] = std::make_unique<ByteCache>(mini.scaled);
-    for (int h = 1; h < 3; ++h) mini.cache[h] = std::make_unique<ByteCache>(scale_cache(config, rate / 2));
+    for (int p = 1; p <= kSampleParts; ++p)
+      mini.cache[p] = std::make_unique<ByteCache>(scale_cache(config, rate / kSampleParts));
     minis_.push_back(std::move(mini));
   }
 }
@@ -289,22 +308,24 @@ void MiniSimulations::access_sampled(const SampledBatch& batch) {
     const std::uint64_t h = hashes[i];
     if (!all && h >= threshold_) continue;
     sampled_[0].push_back(lines[i]);
-    sampled_[h < half_threshold_ ? 1 : 2].push_back(lines[i]);
+    sampled_[1 + (h & (kSampleParts - 1))].push_back(lines[i]);
   }
   for (Mini& mini : minis_)
-    for (int h = 0; h < 3; ++h) mini.cache[h]->access_lines(sampled_[h]);
+    for (int s = 0; s <= kSampleParts; ++s) mini.cache[s]->access_lines(sampled_[s]);
 }
 
 double MiniSimulations::miss_ratio(std::size_t cache) const {
   return minis_[cache].cache[0]->stats().miss_rate();
 }
 
-double MiniSimulations::half_miss_ratio(std::size_t cache, int half) const {
-  return minis_[cache].cache[1 + half]->stats().miss_rate();
+double MiniSimulations::part_miss_ratio(std::size_t cache, int part) const {
+  return minis_[cache].cache[1 + part]->stats().miss_rate();
 }
 
 double MiniSimulations::expected_error(std::size_t cache) const {
-  return stated_error(miss_ratio(cache), half_miss_ratio(cache, 0), half_miss_ratio(cache, 1));
+  double parts[kSampleParts];
+  for (int p = 0; p < kSampleParts; ++p) parts[p] = part_miss_ratio(cache, p);
+  return stated_error(miss_ratio(cache), parts);
 }
 
 const CacheConfig& MiniSimulations::scaled(std::size_t cache) const { return minis_[cache].scaled; }

@@ -18,12 +18,14 @@
 // by R (R times the sets, the same ways; R times the lines when fully associative). Its miss ratio
 // estimates the full cache's.
 //
-// Each estimator also keeps two half samples (hash below T/2, and from T/2 to T), each a complete
-// estimate at rate R/2, from which it states its error (stated_error below): their spread for the
-// sampling noise, and how far the full estimate moved from their mean for the bias of a scaled
-// cache that holds few sampled lines. The spread alone was the error stated before; it does not
-// see the bias, and on a rendered spider frame at 1% it was 3.6x below the measured error at
-// 2 KiB (docs/RELIABILITY.md, "Sampled estimates state their true error").
+// Each estimator also keeps kSampleParts part samples (the sampled lines split by the low bits of
+// their hash, independent of the threshold), each a complete estimate at rate R / kSampleParts,
+// from which it states its error (stated_error below): a 99% confidence interval from the parts'
+// spread for the sampling noise, and how far the full estimate moved from their mean for the bias
+// of a scaled cache that holds few sampled lines. Two halves and their spread alone were the error
+// stated before: it does not see the bias, and one pair of halves is a statistic of one degree of
+// freedom that about 30% of rows exceed (docs/RELIABILITY.md, "Sampled estimates state their true
+// error").
 #pragma once
 
 #include <cstdint>
@@ -58,16 +60,20 @@ inline std::uint64_t sample_hash(std::uint64_t line) {
 // The threshold of a rate: sampled when sample_hash(line) < threshold, or every line at rate 1.
 std::uint64_t sample_threshold(double rate);
 
-// The error an estimate states from its full sample (rate R) and its two halves (R/2 each):
-// |a - b| is twice the halves' spread (the full estimate's standard error is about |a - b| / 2,
-// the halves being independent samples of the lines; twice it for a bound that a single pair of
-// halves does not undershoot as often), plus |full - (a + b) / 2|, the bias: it shrinks about in
-// proportion to 1 / (C * R), so halving the rate adds about as much again as the full sample has.
-inline double stated_error(double full, double a, double b) {
-  const double spread = a > b ? a - b : b - a;
-  const double shift = full > (a + b) / 2 ? full - (a + b) / 2 : (a + b) / 2 - full;
-  return spread + shift;
-}
+// The part samples every estimator keeps beside its full sample (a power of two: a part is the
+// low bits of a line's hash).
+inline constexpr int kSampleParts = 8;
+
+// The error an estimate states from its full sample (rate R) and its kSampleParts parts (rate
+// R / K each, independent samples of the lines):
+//   noise  t * s / sqrt(K), s the parts' standard deviation and t Student's 99.5% quantile for
+//          K - 1 degrees of freedom (3.499 for K = 8): the full estimate's noise at 99%
+//          confidence, two-sided;
+//   bias   |full - mean(parts)|: the bias of a scaled cache shrinks about as 1 / (C * R), so the
+//          parts' bias is K times the full sample's, and the shift from their mean to the full
+//          estimate is K - 1 times it; stated whole, not divided by K - 1, for a margin.
+// Their sum.
+double stated_error(double full, std::span<const double> parts);
 
 // The accesses of one batch that a rate samples, with their hashes: the filter runs once per batch
 // however many estimators of that rate follow (a sweep feeds a ShardsProfile and the
@@ -108,15 +114,15 @@ class ShardsProfile {
   double rate() const;                                      // the final rate
   double sampled_accesses() const;                          // rescaled (fixed size)
   double miss_ratio(std::uint64_t cache_lines) const;       // estimated, fully associative LRU
-  double expected_error(std::uint64_t cache_lines) const;   // stated_error() of the full and half samples
-  double half_miss_ratio(int half, std::uint64_t cache_lines) const;  // half 0 or 1
+  double expected_error(std::uint64_t cache_lines) const;   // stated_error() of the full and part samples
+  double part_miss_ratio(int part, std::uint64_t cache_lines) const;  // part 0 .. kSampleParts - 1
   std::uint64_t tracked_lines() const;
 
  private:
   struct Estimate;
   SampleSpec spec_;
   std::uint64_t accesses_ = 0;
-  std::unique_ptr<Estimate> full_, half_[2];
+  std::unique_ptr<Estimate> full_, part_[kSampleParts];
   std::unique_ptr<SampledBatch> batch_;  // access_lines()'s
 };
 
@@ -134,18 +140,18 @@ class MiniSimulations {
 
   std::uint64_t accesses() const { return accesses_; }
   double miss_ratio(std::size_t cache) const;
-  double expected_error(std::size_t cache) const;  // stated_error() of the full and half samples
-  double half_miss_ratio(std::size_t cache, int half) const;  // half 0 or 1
+  double expected_error(std::size_t cache) const;  // stated_error() of the full and part samples
+  double part_miss_ratio(std::size_t cache, int part) const;  // part 0 .. kSampleParts - 1
   // The scaled cache that stands for cache i ("16KiB/64B/4-way/lru" -> "160B/64B/...").
   const CacheConfig& scaled(std::size_t cache) const;
 
  private:
   struct Mini;
   double rate_;
-  std::uint64_t threshold_, half_threshold_;
+  std::uint64_t threshold_;
   std::uint64_t accesses_ = 0;
   std::vector<Mini> minis_;
-  std::vector<std::uint64_t> sampled_[3];  // this batch's sampled lines: all, half A, half B
+  std::vector<std::uint64_t> sampled_[1 + kSampleParts];  // this batch's sampled lines: all, then each part
   std::unique_ptr<SampledBatch> batch_;    // access_lines()'s
 };
 

@@ -147,7 +147,7 @@ const char* sweep_method(std::span<const SweepRow> rows) {
     (row.sampled_as == "exact" ? simulated : estimated) = true;
   }
   if (!estimated) return "exact";
-  return simulated ? "sampled+exact-small-caches" : "sampled";
+  return simulated ? "sampled+exact-rows" : "sampled";
 }
 
 std::string sweep_layout_name(const SweepSpec& spec, std::size_t layout_index) {

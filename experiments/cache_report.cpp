@@ -48,13 +48,15 @@ void add_sweep_parameters(const SweepSpec& spec, std::vector<std::pair<std::stri
     parameters.emplace_back("sampling", describe(*spec.sample) +
                                             " of the lines by spatial hash: fully associative LRU by SHARDS "
                                             "(Waldspurger et al. 2015), other caches by miniature simulation "
-                                            "(Waldspurger et al. 2017); expected error = |A - B| + |full - (A + B) / 2| "
-                                            "of two independent half samples A, B; simulated exactly instead: the whole "
-                                            "sweep when records x rows <= " +
+                                            "(Waldspurger et al. 2017); expected error = 3.499 s / sqrt(8) + |full - mean| "
+                                            "of 8 independent part samples (s their standard deviation: 99% confidence "
+                                            "for the noise; the shift of the full sample from their mean for the bias); "
+                                            "simulated exactly instead: the whole sweep when records x rows <= " +
                                             std::to_string(spec.sample_guards.exact_accesses) +
                                             ", a row whose scaled cache holds under " +
                                             std::to_string(spec.sample_guards.min_sampled_lines) +
-                                            " sampled lines");
+                                            " sampled lines, a set-associative row of under " +
+                                            std::to_string(spec.sample_guards.min_sampled_assoc) + " ways");
 }
 
 Table byte_cache_table(const std::string& title, std::vector<std::pair<std::string, TableCell>> parameters,
