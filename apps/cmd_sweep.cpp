@@ -51,8 +51,9 @@ void add_sweep_command(CLI::App& app) {
   command->add_option("--sample", o->sample,
                       "Estimate from spatially hashed samples of the lines: RATE (0.01 or 1%) or RATE,max=LINES "
                       "(fixed size, fully associative LRU only): SHARDS for fully associative LRU, miniature "
-                      "simulations for the rest; adds each row's expected error. Short traces and caches scaled under 32 "
-                      "sampled lines are simulated exactly (the table's method says which)");
+                      "simulations for the rest; adds each row's expected error (99% confidence from 8 part samples). Short "
+                      "traces, caches scaled under 32 sampled lines and 1- or 2-way caches are simulated exactly (the "
+                      "table's method says which)");
   command->footer(
       "Examples:\n"
       "  rastrace sweep frame.rtrace --cache size=1KiB..64KiB,assoc=1/2/4/full,policy=fifo/lru/opt,"

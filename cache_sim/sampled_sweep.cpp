@@ -89,7 +89,8 @@ class SampledSink final : public EventSink {
 
 std::vector<std::size_t> run_sampled_rows(const std::string& trace_path, const SweepSpec& spec,
                                           const std::vector<LayoutSpec>& layouts, const TextureLevels& textures,
-                                          std::uint64_t records, SweepRows& rows, bool show_progress) {
+                                          std::uint64_t records, std::size_t configurations, SweepRows& rows,
+                                          bool show_progress) {
   const SampleSpec sample = *spec.sample;
   const SampleGuards& guards = spec.sample_guards;
   std::vector<SampledGroup> groups;
@@ -109,7 +110,7 @@ std::vector<std::size_t> run_sampled_rows(const std::string& trace_path, const S
     exact.push_back(r);
   };
   // A short trace: the exact sweep costs about as much as the sample and states no error.
-  if (records > 0 && double(records) * double(rows.size()) <= double(guards.exact_accesses)) {
+  if (records > 0 && double(records) * double(configurations) <= double(guards.exact_accesses)) {
     for (std::size_t r = 0; r < rows.size(); ++r) simulate_exactly(r);
     return exact;
   }

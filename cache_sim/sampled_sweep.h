@@ -19,13 +19,16 @@ namespace rastrace {
 // rows[i].sampled_as and rows[i].expected_error for the rows the sample may estimate, and returns
 // the indices of the others, which the caller simulates exactly (their sampled_as is "exact",
 // their expected_error 0): every row when `records` (the source's records in the trace, 0 when
-// unknown) times the rows is at most spec.sample_guards.exact_accesses (the trace is not read
-// then), otherwise the rows whose cache scaled to the sample's final rate holds fewer than
-// spec.sample_guards.min_sampled_lines lines. rows[i].layout_index says which of `layouts` the
+// unknown) times `configurations` (the whole sweep's, every shard's: a shard decides as the
+// unsharded sweep does) is at most spec.sample_guards.exact_accesses (the trace is not read then),
+// otherwise the rows whose cache scaled to the sample's final rate holds fewer than
+// spec.sample_guards.min_sampled_lines lines and the set-associative rows of fewer than
+// spec.sample_guards.min_sampled_assoc ways. rows[i].layout_index says which of `layouts` the
 // row uses (texel source). Throws InputError for OPT rows, and for fixed-size sampling with rows
 // that need a miniature simulation (fixed rate only).
 std::vector<std::size_t> run_sampled_rows(const std::string& trace_path, const SweepSpec& spec,
                                           const std::vector<LayoutSpec>& layouts, const TextureLevels& textures,
-                                          std::uint64_t records, SweepRows& rows, bool progress);
+                                          std::uint64_t records, std::size_t configurations, SweepRows& rows,
+                                          bool progress);
 
 }  // namespace rastrace

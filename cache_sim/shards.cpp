@@ -197,7 +197,7 @@ struct ShardsProfile::Estimate {
   }
 };
 
-double stated_error(double full, std::span<const double> parts) {
+double stated_error(double full, std::span<const double, kSampleParts> parts) {
   static_assert(kSampleParts == 8, "the quantile below is for 7 degrees of freedom");
   constexpr double kStudent995 = 3.499;  // Student's t, 99.5% quantile, 7 degrees of freedom
   const double k = double(parts.size());
@@ -235,9 +235,10 @@ void ShardsProfile::access_sampled(const SampledBatch& batch) {
   const std::span<const std::uint64_t> lines = batch.lines(), hashes = batch.hashes();
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const std::uint64_t h = hashes[i];
-    if (!full_->takes(h)) continue;  // a batch sampled at a higher rate, or a fixed size's fallen rate
-    full_->access(lines[i], h);
+    // Each estimate takes the lines under its own threshold: a fixed size's thresholds fall
+    // independently, so a part may still take a line the full sample has dropped.
     part_[h & (kSampleParts - 1)]->access(lines[i], h);
+    full_->access(lines[i], h);
   }
 }
 

@@ -73,7 +73,7 @@ inline constexpr int kSampleParts = 8;
 //          parts' bias is K times the full sample's, and the shift from their mean to the full
 //          estimate is K - 1 times it; stated whole, not divided by K - 1, for a margin.
 // Their sum.
-double stated_error(double full, std::span<const double> parts);
+double stated_error(double full, std::span<const double, kSampleParts> parts);
 
 // The accesses of one batch that a rate samples, with their hashes: the filter runs once per batch
 // however many estimators of that rate follow (a sweep feeds a ShardsProfile and the

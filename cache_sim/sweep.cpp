@@ -219,8 +219,8 @@ SweepResult run_sweep(const std::string& trace_path, const SweepSpec& spec, unsi
   std::vector<std::size_t> simulate(result.rows.size());
   std::iota(simulate.begin(), simulate.end(), std::size_t{0});
   if (spec.sample) {
-    simulate = run_sampled_rows(trace_path, spec, layouts, summary.metadata.textures, records, result.rows,
-                                show_progress);
+    simulate = run_sampled_rows(trace_path, spec, layouts, summary.metadata.textures, records, result.configurations,
+                                result.rows, show_progress);
     if (row_sink) {
       // The estimated rows are final now; the simulated ones follow as their jobs finish.
       std::vector<std::size_t> estimated;

@@ -198,8 +198,11 @@ void check_kinds(std::span<const Table> tables) {
         throw std::logic_error("table '" + table.title + "' has no kind in an output of several tables");
       continue;
     }
-    const auto [it, inserted] = keys_of_kind.emplace(table.kind, json_keys(table));
-    if (!inserted && it->second != json_keys(table))
+    const std::vector<std::string> keys = json_keys(table);
+    if (std::find(keys.begin(), keys.end(), "kind") != keys.end())
+      throw std::logic_error("table '" + table.title + "' has a kind and a column or parameter named kind");
+    const auto [it, inserted] = keys_of_kind.emplace(table.kind, keys);
+    if (!inserted && it->second != keys)
       throw std::logic_error("tables of kind '" + table.kind + "' with different keys ('" + table.title + "')");
   }
 }

@@ -127,6 +127,36 @@ SweepPart read_sweep_part(const std::string& path) {
   }
 }
 
+namespace {
+
+// A sampled sweep's `method` says how its own rows were found, so two shards of one sweep may
+// state different ones: it is left out of the comparison and stated again for the merged rows.
+constexpr const char* kMethod = "method";
+
+using Parameters = std::vector<std::pair<std::string, TableCell>>;
+
+Parameters without_method(const Parameters& parameters) {
+  Parameters out;
+  for (const auto& parameter : parameters)
+    if (parameter.first != kMethod) out.push_back(parameter);
+  return out;
+}
+
+// The method of the merged rows, from their estimated_by column (as sweep_method states it).
+void restate_method(Table& table) {
+  const auto column = std::find_if(table.columns.begin(), table.columns.end(),
+                                   [](const TableColumn& c) { return c.key == "estimated_by"; });
+  const auto parameter = std::find_if(table.parameters.begin(), table.parameters.end(),
+                                      [](const auto& p) { return p.first == kMethod; });
+  if (column == table.columns.end() || parameter == table.parameters.end()) return;
+  const std::size_t c = static_cast<std::size_t>(column - table.columns.begin());
+  bool estimated = false, simulated = false;
+  for (const auto& row : table.rows) (row[c] == TableCell("exact") ? simulated : estimated) = true;
+  parameter->second = !estimated ? "exact" : simulated ? "sampled+exact-rows" : "sampled";
+}
+
+}  // namespace
+
 MergedSweep merge_sweep_parts(const std::vector<SweepPart>& parts, const std::vector<std::string>& paths) {
   if (parts.empty()) throw InputError("merge: expected at least one part");
   const SweepPart& first = parts.front();
@@ -145,7 +175,7 @@ MergedSweep merge_sweep_parts(const std::vector<SweepPart>& parts, const std::ve
     if (p.configurations != first.configurations || p.table.title != first.table.title ||
         p.table.columns.size() != first.table.columns.size())
       differs(i, "a configuration set of", std::to_string(first.configurations), std::to_string(p.configurations));
-    if (p.table.parameters != first.table.parameters)
+    if (without_method(p.table.parameters) != without_method(first.table.parameters))
       throw InputError("merge: " + paths[i] + " and " + paths[0] + " state different parameters");
     const auto [at, inserted] = shards.emplace(p.shard.index, i);
     if (!inserted)
@@ -174,6 +204,7 @@ MergedSweep merge_sweep_parts(const std::vector<SweepPart>& parts, const std::ve
   }
   std::sort(rows.begin(), rows.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   for (const auto& [configuration, cells] : rows) merged.table.rows.push_back(*cells);
+  restate_method(merged.table);
   // Each part lists the impossible combinations it owns; they are told shard by shard.
   for (std::uint32_t k = 1; k <= first.shard.count; ++k)
     for (const std::string& s : parts[shards[k]].skipped) merged.skipped.push_back(s);

@@ -139,7 +139,7 @@ Table frame_experiment_table(const TextureExperiment& experiment, const std::vec
 Table texture_experiment_table(const TextureExperiment& experiment, const std::vector<TextureRun>& runs) {
   Table table;
   table.title = experiment.title;
-  table.kind = "texture_cache";
+  table.kind = "texture_sweep";
   table.parameters = {
       {"scene", experiment.render.scene},
       {"filter", experiment.render.filter},

@@ -83,7 +83,7 @@ def open_trace(path: str) -> TraceFile:
     """A rastrace trace, chunk by chunk; records as numpy structured arrays."""
 
 def replay(trace: str, caches: Sequence[str], keep_vertex_cache: bool = False) -> dict[str, Columns]:
-    """Every cache of the specs in one pass: {'vertex'|'texel'|'vertex_buffer'|'address': Columns}."""
+    """Every cache of the specs in one pass: {'vertex'|'texel'|'vertex_buffer'|'address'|'framebuffer'|'sectored'|'hierarchy': Columns}."""
 
 def sweep(trace: str, cache: str = "size=1KiB..64KiB", threads: int = 0, keep_vertex_cache: bool = False) -> Columns:
     """Every combination of the spec over the trace, in parallel, as `rastrace sweep`."""

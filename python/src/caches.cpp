@@ -144,13 +144,14 @@ py::dict replay(const std::string& trace, const std::vector<std::string>& caches
     py::gil_scoped_release release;
     tables = replay_tables(trace, caches, keep_vertex_cache, "--cache", false);
   }
-  // Keyed by what the caches see: vertex (post-transform), texel, vertex_buffer, address.
+  // Keyed by what the caches see: vertex (post-transform), texel, vertex_buffer, address,
+  // framebuffer, sectored, hierarchy: each table's kind without its "_cache" (a key per kind, so
+  // no table replaces another).
   py::dict out;
   for (const Table& table : tables) {
-    std::string key = "vertex";
-    for (const auto& [name, value] : table.parameters)
-      if (name == "source")
-        key = std::get<std::string>(value.value) == "vertex" ? "vertex_buffer" : std::get<std::string>(value.value);
+    std::string key = table.kind == "texture_cache" ? "texel" : table.kind;
+    if (key.ends_with("_cache")) key.resize(key.size() - 6);
+    if (key == "hierarchy_level") key = "hierarchy";
     out[key.c_str()] = table_columns(table);
   }
   return out;
@@ -208,7 +209,8 @@ void bind_caches(py::module_& m) {
   m.def("replay", &replay, py::arg("trace"), py::arg("caches"), py::arg("keep_vertex_cache") = false,
         "Replays a trace (.rtrace, .csv or .din) once through every cache of the cache specs (a list,\n"
         "as `rastrace replay --cache SPEC ...`), with the LiveBankSink live rendering uses. Returns a\n"
-        "dict: source (vertex = post-transform caches, texel, vertex_buffer, address) -> Columns keyed\n"
+        "dict: source (vertex = post-transform caches, texel, vertex_buffer, address, framebuffer, sectored,\n"
+        "hierarchy) -> Columns keyed\n"
         "like the JSON output.");
   m.def("sweep", &sweep, py::arg("trace"), py::arg("cache") = "size=1KiB..64KiB", py::arg("threads") = 0,
         py::arg("keep_vertex_cache") = false,

@@ -41,6 +41,18 @@ def test_replay_equals_the_cli_json(bunny_trace):
     assert_rows_equal(result["vertex_buffer"], rows[2:3])
 
 
+def test_replay_keys_every_table_by_its_kind(bunny_trace):
+    """A framebuffer cache beside a vertex cache: each table under its own key (the framebuffer
+    table has no source parameter, and was once filed under 'vertex', replacing that table)."""
+    specs = ["entries=16,policy=fifo", "size=4KiB,source=depth"]
+    result = rastrace.replay(str(bunny_trace), specs)
+    assert set(result) == {"vertex", "framebuffer"}
+    rows = cli_json("replay", bunny_trace, *[a for spec in specs for a in ("--cache", spec)])
+    assert [row["kind"] for row in rows] == ["vertex_cache", "framebuffer_cache"]
+    assert_rows_equal(result["vertex"], rows[:1])
+    assert_rows_equal(result["framebuffer"], rows[1:2])
+
+
 def test_lru_profile_equals_fully_associative_lru_sweeps(bunny_trace):
     profile = rastrace.lru_profile(str(bunny_trace), line="64B", layout="morton", sets=16, max_ways=8)
     sweep = rastrace.sweep(str(bunny_trace), "size=1KiB..64KiB,line=64B,assoc=full,policy=lru,layout=morton")

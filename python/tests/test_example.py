@@ -20,7 +20,7 @@ def test_yang_example_reproduces_texsweep(tmp_path):
     expected = [row for row in cli_json("texsweep", "builtin:bunny", "--order", "strip,texgroup", "--raster",
                                         "scanline", "--resolution", "160x160", "--tcache",
                                         "size=1KiB..64KiB,line=64B,assoc=full,policy=lru,layout=linear")
-                if row["kind"] == "texture_cache"]
+                if row["kind"] == "texture_sweep"]
     assert len(rows) == len(expected) == 14
     for row, want in zip(rows.itertuples(), expected):
         assert (row.order, row.size_bytes, row.accesses, row.misses) == (

@@ -3,6 +3,7 @@
 // belong together are refused with the reason.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <fstream>
@@ -81,6 +82,43 @@ TEST_F(ShardMerge, VertexCacheSweepMergesToTheUnshardedOutput) {
 }
 
 TEST_F(ShardMerge, MoreShardsThanConfigurationsStillMerge) { expect_merge_equals_sweep("size=4KiB/8KiB", 5, "sparse"); }
+
+TEST_F(ShardMerge, SampledSweepMergesToTheUnshardedOutputThoughShardsStateDifferentMethods) {
+  // A trace long enough to be sampled (1.57 M texel records x 48 configurations > 64 Mi). The size
+  // varies fastest, so shard 1/2 holds every 2 KiB row (under 32 sampled lines at 10%: simulated,
+  // `method: exact`) and shard 2/2 every 1 MiB row (`sampled`); the merge states
+  // `sampled+exact-rows` like the unsharded sweep. The exact-sweep guard counts the whole sweep's
+  // configurations, so each shard decides every row as the unsharded sweep does.
+  const std::string bunny = dir_->file("bunny.rtrace");
+  const auto rendered = run_rastrace({"render", "builtin:bunny", "--size", "1024x1024", "-o", dir_->file("bunny.png"),
+                                      "--trace", bunny});
+  ASSERT_EQ(rendered.exit_code, 0) << rendered.err;
+  const std::string cache = "size=2KiB/1MiB,line=32B/64B/128B,assoc=4/8/16/full,policy=lru/fifo";
+  std::vector<std::string> parts;
+  for (int k = 1; k <= 2; ++k) {
+    parts.push_back(dir_->file("sampled-" + std::to_string(k) + ".json"));
+    const auto r = run_rastrace({"sweep", bunny, "--cache", cache, "--sample", "0.1", "--shard",
+                                 std::to_string(k) + "/2", "-o", parts.back()});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::ifstream in(parts.back());
+    const auto part = nlohmann::json::parse(in);
+    std::string method;
+    for (const auto& parameter : part["table"]["parameters"])
+      if (parameter[0] == "method") method = parameter[1];
+    EXPECT_EQ(method, k == 1 ? "exact" : "sampled") << k;
+  }
+  for (const char* format : {"md", "json"}) {
+    const auto whole = run_rastrace({"sweep", bunny, "--cache", cache, "--sample", "0.1", "--format", format});
+    ASSERT_EQ(whole.exit_code, 0) << whole.err;
+    EXPECT_THAT(whole.out, HasSubstr("sampled+exact-rows"));
+    std::vector<std::string> merge = {"merge"};
+    merge.insert(merge.end(), parts.begin(), parts.end());
+    merge.insert(merge.end(), {"--format", format});
+    const auto merged = run_rastrace(merge);
+    ASSERT_EQ(merged.exit_code, 0) << merged.err;
+    EXPECT_EQ(merged.out, whole.out) << format;
+  }
+}
 
 TEST_F(ShardMerge, PartsThatDoNotBelongTogetherAreRefused) {
   const std::string cache = "size=1KiB..8KiB";

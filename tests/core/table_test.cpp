@@ -75,6 +75,10 @@ TEST(Table, SeveralTablesWithoutKindsOrOneKindOfTwoSchemasAreRejected) {
   EXPECT_NO_THROW(render_tables(std::vector<Table>{first, second}, TableFormat::Json));
   second.parameters.emplace_back("seed", 3);
   EXPECT_THROW(render_tables(std::vector<Table>{first, second}, TableFormat::Json), std::logic_error);
+  Table named = sample_table();
+  named.kind = "vertex_cache";
+  named.parameters.emplace_back("kind", "mine");  // would overwrite the row's kind
+  EXPECT_THROW(render_table(named, TableFormat::Json), std::logic_error);
   // One table alone needs no kind: its rows are one schema.
   EXPECT_NO_THROW(render_table(sample_table(), TableFormat::Json));
 }

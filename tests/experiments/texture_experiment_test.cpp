@@ -111,9 +111,9 @@ TEST(TextureExperiment, JsonRowsSplitByKindIntoOneSchemaPerTable) {
     EXPECT_EQ(known->second, keys) << kind;
   }
   // 2 orders x 2 rasters: 3 sizes x 2 policies x 2 layouts texture-cache rows each, one frame row each.
-  EXPECT_EQ(rows_of_kind, (std::map<std::string, int>{{"frame_traffic", 4}, {"texture_cache", 48}}));
-  EXPECT_NE(std::find(keys_of_kind["texture_cache"].begin(), keys_of_kind["texture_cache"].end(), "miss_rate"),
-            keys_of_kind["texture_cache"].end());
+  EXPECT_EQ(rows_of_kind, (std::map<std::string, int>{{"frame_traffic", 4}, {"texture_sweep", 48}}));
+  EXPECT_NE(std::find(keys_of_kind["texture_sweep"].begin(), keys_of_kind["texture_sweep"].end(), "miss_rate"),
+            keys_of_kind["texture_sweep"].end());
   EXPECT_NE(std::find(keys_of_kind["frame_traffic"].begin(), keys_of_kind["frame_traffic"].end(), "overdraw"),
             keys_of_kind["frame_traffic"].end());
 }

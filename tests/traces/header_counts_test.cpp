@@ -67,7 +67,9 @@ TEST(TraceHeaderCounts, ChunksOfZeroCostRecordsWithinTheLimitReplayInAMoment) {
   replay_trace(reader, sink);
   EXPECT_EQ(sink.addresses, 4u * kMaxChunkRecords);
   EXPECT_LT(file.size(), 512u);  // 4 Mi records in under 512 bytes: the limit is the bound
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
+  // 0.1-0.3 s in Release; generous for sanitizers and a loaded machine, far under a loop that
+  // trusted a count of 2^32 records.
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 20.0);
 }
 
 TEST(TraceHeaderCounts, ACountPastTheChunkLimitIsAnErrorNamingTheFileAndTheIndexEntry) {
