@@ -7,6 +7,10 @@
 
 namespace rastrace {
 
+namespace {
+constexpr std::uint32_t kMaxLevelSide = 65536;  // texels a side of one mip level
+}  // namespace
+
 std::string metadata_to_json(const TraceMetadata& m) {
   nlohmann::json j;
   j["tool"] = "rastrace";
@@ -41,8 +45,13 @@ TraceMetadata metadata_from_json(const std::string& text, const std::string& fil
       const auto& t = j.at("textures").at(i);
       for (std::size_t k = 0; k < t.size(); ++k) {
         const std::string where = file + ": metadata header: textures[" + std::to_string(i) + "][" + std::to_string(k) + "]";
-        levels.push_back({json_integer<std::uint32_t>(t.at(k).at(0), where + "[0]"),
-                          json_integer<std::uint32_t>(t.at(k).at(1), where + "[1]")});
+        const LevelSize level{json_integer<std::uint32_t>(t.at(k).at(0), where + "[0]"),
+                              json_integer<std::uint32_t>(t.at(k).at(1), where + "[1]")};
+        // Layouts round a side up to a power of two in 32 bits; no GPU texture is wider than 32768.
+        if (level.width > kMaxLevelSide || level.height > kMaxLevelSide)
+          throw InputError(where + ": level of " + std::to_string(level.width) + "x" + std::to_string(level.height) +
+                           " texels: expected at most " + std::to_string(kMaxLevelSide) + " a side");
+        levels.push_back(level);
       }
       m.textures.push_back(std::move(levels));
     }
