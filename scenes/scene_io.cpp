@@ -193,11 +193,23 @@ class SceneReader {
   // Counts a procedural mesh's bytes (positions, normals, UVs, indices, face materials) into the
   // scene's total before it is generated, through the one allocation limit: each side is bounded,
   // but a scene of many 4096 x 4096 grids is not.
-  void reserve_procedural_mesh(std::uint64_t vertices, std::uint64_t triangles, const std::string& where) {
+  void reserve_procedural_mesh(std::uint64_t vertices, std::uint64_t triangles, const std::string& where,
+                               const char* what = "the scene's procedural meshes") {
     constexpr std::uint64_t kVertexBytes = sizeof(glm::vec3) * 2 + sizeof(glm::vec2);
     constexpr std::uint64_t kTriangleBytes = sizeof(std::uint32_t) * 4;
     procedural_mesh_bytes_ += vertices * kVertexBytes + triangles * kTriangleBytes;
-    checked_bytes(procedural_mesh_bytes_, 1, file_ + ": " + where + ": the scene's procedural meshes");
+    checked_bytes(procedural_mesh_bytes_, 1, file_ + ": " + where + ": " + what);
+  }
+
+  // A mesh file is read once however many objects list it (a scene of a few hundred bytes could
+  // list one large file thousands of times); each object's copy counts into the scene's total of
+  // mesh bytes, as a procedural mesh does, so the copies are bounded by the allocation limit.
+  Mesh file_mesh(const std::string& path, const std::string& where) {
+    auto it = file_meshes_.find(path);
+    if (it == file_meshes_.end()) it = file_meshes_.emplace(path, load_mesh(path)).first;
+    const Mesh& mesh = it->second;
+    reserve_procedural_mesh(mesh.positions.size(), mesh.indices.size() / 3, where, "the scene's meshes");
+    return mesh;
   }
 
   Mesh procedural_mesh(const json& value, const std::string& where) {
@@ -293,7 +305,7 @@ class SceneReader {
     SceneObject result;
     const json& mesh = required(value, where, "mesh");
     if (mesh.is_string())
-      result.mesh = load_mesh(file_path(mesh, where + ".mesh"));
+      result.mesh = file_mesh(file_path(mesh, where + ".mesh"), where + ".mesh");
     else if (mesh.is_object())
       result.mesh = procedural_mesh(mesh, where + ".mesh");
     else
@@ -335,6 +347,7 @@ class SceneReader {
   std::string file_;
   fs::path folder_;
   std::uint64_t procedural_mesh_bytes_ = 0;  // summed over the scene by reserve_procedural_mesh()
+  std::map<std::string, Mesh> file_meshes_;  // by path, each read once
 };
 
 // Line of byte `offset` in `text` (1-based).

@@ -106,6 +106,25 @@ TEST(JsonScene, ProceduralMeshesAndTexturesBeyondTheMemoryLimitAreErrorsNamingTh
   ::unsetenv("RASTRACE_MEMORY_LIMIT");
 }
 
+// A scene of a few kilobytes may list one mesh file hundreds of times: the file is read once, and
+// every object's copy counts into the scene's mesh bytes against the allocation limit (64 MiB here),
+// so the copies end in an error naming the first object past it rather than in an allocation failure.
+TEST(JsonScene, OneMeshFileListedManyTimesIsReadOnceAndItsCopiesAreBounded) {
+  TempDir dir;
+  std::filesystem::copy_file(testing::data_file("meshes/triceratops.off"), dir.file("t.off"));
+  const auto listing = [&](int n) {
+    std::string body = R"({"objects": [)";
+    for (int i = 0; i < n; ++i) body += std::string(i ? ", " : "") + R"({"mesh": "t.off"})";
+    return dir.write("many.json", body + "]}");
+  };
+  ::setenv("RASTRACE_MEMORY_LIMIT", "67108864", 1);
+  const Scene scene = load_scene(listing(200));
+  ASSERT_EQ(scene.objects.size(), 200u);
+  for (const SceneObject& object : scene.objects) EXPECT_EQ(object.mesh.face_count(), 5660u);
+  EXPECT_THAT(error_of(listing(1000)), HasSubstr("many.json: objects[370].mesh: the scene's meshes: needs 67219264 bytes"));
+  ::unsetenv("RASTRACE_MEMORY_LIMIT");
+}
+
 TEST(JsonScene, RelativePathsResolveBesideTheSceneThenInTheDataFolder) {
   TempDir dir;
   std::filesystem::copy_file(testing::data_file("meshes/triceratops.off"), dir.file("local.off"));
