@@ -140,14 +140,18 @@ void simulate_rows(const std::string& trace_path, const SweepSpec& spec, const s
 
 }  // namespace
 
+const char* sweep_method(bool estimated, bool simulated) {
+  if (!estimated) return "exact";
+  return simulated ? "sampled+exact-rows" : "sampled";
+}
+
 const char* sweep_method(std::span<const SweepRow> rows) {
   bool estimated = false, simulated = false;
   for (const SweepRow& row : rows) {
     if (row.expected_error < 0) continue;  // not a sampled sweep's row
     (row.sampled_as == "exact" ? simulated : estimated) = true;
   }
-  if (!estimated) return "exact";
-  return simulated ? "sampled+exact-rows" : "sampled";
+  return sweep_method(estimated, simulated);
 }
 
 std::string sweep_layout_name(const SweepSpec& spec, std::size_t layout_index) {

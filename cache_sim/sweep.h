@@ -100,6 +100,8 @@ struct SweepResult {
 // SampleGuards), "sampled" (every row estimated) or "sampled+exact-rows" (the rows under
 // SampleGuards::min_sampled_lines or min_sampled_assoc simulated, the rest estimated).
 const char* sweep_method(std::span<const SweepRow> rows);
+// The same from whether some rows were estimated and some simulated (a merge of shards' rows).
+const char* sweep_method(bool estimated, bool simulated);
 
 // The layout column of the rows of SweepSpec::layouts[layout_index] (texel source; a layout's
 // name), and of every row of the other sources ("stride32" for vertex buffers, "-" for addresses).

@@ -152,7 +152,7 @@ void restate_method(Table& table) {
   const std::size_t c = static_cast<std::size_t>(column - table.columns.begin());
   bool estimated = false, simulated = false;
   for (const auto& row : table.rows) (row[c] == TableCell("exact") ? simulated : estimated) = true;
-  parameter->second = !estimated ? "exact" : simulated ? "sampled+exact-rows" : "sampled";
+  parameter->second = sweep_method(estimated, simulated);
 }
 
 }  // namespace

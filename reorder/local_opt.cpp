@@ -158,7 +158,7 @@ class Local {
     crowded_.assign(t_.face_count, 0);
     for (std::uint32_t f = 0; f < t_.face_count; ++f)
       for (int i = 0; i < 3; ++i)
-        if (t_.faces_of_vertex(idx_[3 * std::size_t(f) + i]).size() > kAllPartnersDegree) crowded_[f] = 1;
+        if (crowded_vertex(idx_[3 * std::size_t(f) + i])) crowded_[f] = 1;
     recompute();
   }
 
@@ -558,7 +558,7 @@ class Local {
     };
     for (int i = 0; i < 3; ++i) {
       const std::span<const std::uint32_t> faces = t_.faces_of_vertex(v[i]);
-      if (faces.size() <= kAllPartnersDegree) {
+      if (!crowded_vertex(v[i])) {
         for (const std::uint32_t g : faces) consider_face(g);
         continue;
       }
@@ -580,6 +580,9 @@ class Local {
     }
     return best;
   }
+
+  // A vertex in more faces than the paper's rule can afford as partners (see kAllPartnersDegree).
+  bool crowded_vertex(std::uint32_t v) const { return t_.faces_of_vertex(v).size() > kAllPartnersDegree; }
 
   bool pruned(std::uint32_t x) const {
     const std::uint32_t f = F_[x];
