@@ -1,9 +1,13 @@
-// Textures as the renderer samples them: 8-bit RGBA levels, level 0 first, down to 1x1.
+// Textures as the renderer samples them: 8-bit RGBA levels, level 0 first, down to 1x1. A
+// block-compressed texture keeps its storage format and its blocks beside the decoded texels the
+// sampler reads, so traces, cache models and the reference renderer see the same data.
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "core/texture_format.h"
 
 namespace rastrace {
 
@@ -21,6 +25,7 @@ struct Image {
 struct Texture {
   std::string name;
   std::vector<Image> levels;  // levels[0] is the base; each next level halves with floor, to 1x1
+  TextureFormat format = TextureFormat::Rgba8;  // how the texels are stored in memory
 };
 
 }  // namespace rastrace
