@@ -103,6 +103,9 @@ void add_render_command(CLI::App& app) {
       ->check(CLI::Range(1, 4096));
   command->add_option("--inclusion", options->hierarchy.inclusion, "Hierarchy: inclusive or non-inclusive")
       ->check(CLI::IsMember({"inclusive", "non-inclusive"}));
+  command->add_flag("--decoded-l1", options->hierarchy.decoded_l1,
+                    "Hierarchy: the L1 holds decoded texels and the levels below compressed blocks (textures the "
+                    "trace or the L1's format= stores block-compressed)");
   command->add_option("--frames", options->frames,
                       "Draw frames 0..N-1 along the scene's camera_path (its static camera without one); caches keep "
                       "their contents between frames, the table sums all frames, --trace holds every frame, --level "

@@ -39,6 +39,9 @@ void add_replay_command(CLI::App& app) {
       ->check(CLI::Range(1, 4096));
   command->add_option("--inclusion", hierarchy->inclusion, "Hierarchy: inclusive or non-inclusive")
       ->check(CLI::IsMember({"inclusive", "non-inclusive"}));
+  command->add_flag("--decoded-l1", hierarchy->decoded_l1,
+                    "Hierarchy: the L1 holds decoded texels and the levels below compressed blocks (textures the "
+                    "trace or the L1's format= stores block-compressed)");
   command->add_option("--format", *format, "Table format: md, csv, latex or json");
   command->add_option("-o,--output", *output, "Write the table to this file (atomically) instead of stdout");
   auto miss_map = std::make_shared<std::string>();
@@ -58,6 +61,9 @@ void add_replay_command(CLI::App& app) {
       "  rastrace replay old.din --cache size=32KiB,line=32B,assoc=2 --format json\n"
       "  rastrace replay frame.rtrace --level size=16KiB,line=128B,sector=32B,assoc=4,layout=block4 \\\n"
       "      --level size=1MiB,line=128B,assoc=16 --units 4 --tile 16 --inclusion inclusive\n"
+      "  rastrace replay frame.rtrace --cache size=16KiB,line=64B,assoc=4,layout=morton,format=rgba8/bc1/bc7\n"
+      "  rastrace replay frame.rtrace --level size=4KiB,line=64B,assoc=4,layout=morton,format=bc1 \\\n"
+      "      --level size=16KiB,line=64B,assoc=8 --decoded-l1\n"
       "  rastrace replay frame.rtrace --cache size=32KiB,line=128B,assoc=2,layout=block4 --miss-map misses.png\n"
       "  rastrace replay orbit.rtrace --per-frame --level size=16KiB,line=64B,assoc=4,layout=block4 \\\n"
       "      --level size=1MiB,line=64B,assoc=16");

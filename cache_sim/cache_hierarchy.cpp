@@ -1,5 +1,7 @@
 #include "cache_sim/cache_hierarchy.h"
 
+#include <algorithm>
+
 #include "core/enum_names.h"
 #include "core/error.h"
 #include "core/units.h"
@@ -31,6 +33,12 @@ CacheHierarchy::CacheHierarchy(HierarchyConfig config) : config_(std::move(confi
   if (config_.units == 0) throw InputError("cache hierarchy: units=0: expected at least one texture unit");
   if (config_.tile == 0) throw InputError("cache hierarchy: tile=0: expected a tile side of at least one pixel");
   if (config_.element_bytes == 0) throw InputError("cache hierarchy: element bytes 0");
+  if (config_.decoded_l1 && config_.levels.size() < 2)
+    throw InputError("cache hierarchy: a decoded L1 needs a level of compressed blocks below it (a second --level)");
+  if (config_.decoded_l1 && config_.inclusion == Inclusion::Inclusive)
+    throw InputError(
+        "cache hierarchy: a decoded L1 holds texels in another address space than the compressed levels below; "
+        "inclusive back-invalidation is not modelled: expected --inclusion non-inclusive");
   for (std::uint32_t u = 0; u < config_.units; ++u) l1_.push_back(make_level(config_.levels[0], 0));
   for (std::size_t k = 1; k < config_.levels.size(); ++k) lower_.push_back(make_level(config_.levels[k], k));
   l1_requested_.assign(config_.units, 0);
@@ -39,14 +47,17 @@ CacheHierarchy::CacheHierarchy(HierarchyConfig config) : config_(std::move(confi
   lower_invalidated_.assign(lower_.size(), 0);
 }
 
-bool CacheHierarchy::access(std::uint64_t address, std::uint32_t unit) {
+bool CacheHierarchy::access(std::uint64_t address, std::uint32_t unit, std::uint32_t decode_shift) {
   SectoredCache& l1 = l1_[unit];
   l1_requested_[unit] += config_.element_bytes;
   const SectoredCache::Outcome outcome = l1.access(address);
   if (outcome.hit) return true;
   if (!lower_.empty()) {
     const std::uint64_t g = granule(l1);
-    fill(1, address & ~(g - 1), g);
+    const std::uint64_t first = address & ~(g - 1);
+    // Compressed bytes the decoded granule comes from; a granule smaller than its block's decoded
+    // texels still needs the block, so at least one byte of it.
+    fill(1, first >> decode_shift, std::max<std::uint64_t>(g >> decode_shift, 1));
   }
   return false;
 }
@@ -111,7 +122,8 @@ std::string describe(const HierarchyConfig& config) {
   std::string out;
   for (std::size_t k = 0; k < config.levels.size(); ++k) {
     const CacheLevelSpec& level = config.levels[k];
-    out += (k ? " | L" : "L") + std::to_string(k + 1) + " " + describe(level.cache);
+    out += (k ? " | L" : "L") + std::to_string(k + 1) + (k == 0 && config.decoded_l1 ? " decoded " : " ") +
+           describe(level.cache);
     if (level.sector_bytes && level.sector_bytes != level.cache.line_bytes)
       out += " sector " + format_byte_size(level.sector_bytes);
     if (k == 0 && config.units > 1)

@@ -15,6 +15,13 @@
 //   inclusive      when level k >= 1 evicts a line, every upper-level line overlapping its bytes
 //                  is invalidated, in every L1 (back-invalidation), so upper contents stay a
 //                  subset of lower ones
+// Decoded L1 (decoded_l1): for block-compressed textures, the L1 holds decoded texels and the
+// levels below hold compressed blocks, as texture units decompress between a cache of blocks and
+// a cache of texels. L1 addresses are then in the decoded space (TextureLayout::decoded_address)
+// and an L1 miss asks the next level for the compressed bytes its granule decodes from: granule
+// [a, a + g) is [a >> s, (a + g) >> s) compressed, at least one byte, where 2^s is the texture's
+// decoded bytes per compressed byte (8 for BC1, 4 for BC7). Inclusive hierarchies are refused
+// here: a lower line's bytes would map back to a different range per format.
 // Per level: accesses, misses (sector misses included), line misses, bytes requested from it
 // (L1: accesses * element bytes, the texel size; below: the bytes the level above fetched),
 // bytes it fetched from the next level (misses * granule). Request miss ratio = misses /
@@ -45,6 +52,7 @@ struct HierarchyConfig {
   std::uint32_t tile = 16;             // pixels: side of the screen tiles dealt out to the units
   Inclusion inclusion = Inclusion::NonInclusive;
   std::uint32_t element_bytes = 4;  // bytes one L1 access asks for (the texel size)
+  bool decoded_l1 = false;          // L1 of decoded texels over levels of compressed blocks
 };
 
 struct LevelStats {
@@ -66,7 +74,8 @@ class CacheHierarchy {
   explicit CacheHierarchy(HierarchyConfig config);
 
   // One element read by texture unit `unit` (< units) at byte `address`; true on an L1 hit.
-  bool access(std::uint64_t address, std::uint32_t unit);
+  // decode_shift: for a decoded L1, log2 of the texture's decoded bytes per compressed byte.
+  bool access(std::uint64_t address, std::uint32_t unit, std::uint32_t decode_shift = 0);
   static std::uint32_t unit_of_pixel(std::uint32_t x, std::uint32_t y, std::uint32_t tile, std::uint32_t units) {
     return (x / tile + y / tile) % units;
   }

@@ -155,6 +155,30 @@ void set_layout(CacheSpec& s, const std::vector<std::string>& values, const Cont
   }
 }
 
+// Every layout given (or the default) once per format: a format multiplies the layouts as a sweep
+// dimension, and "trace" keeps the formats the trace records.
+void set_format(CacheSpec& s, const std::vector<std::string>& values, const Context& c) {
+  std::vector<LayoutSpec> layouts;
+  for (const LayoutSpec& base : s.layouts)
+    for (const std::string& v : values) {
+      LayoutSpec layout = base;
+      if (v == "trace") {
+        layout.format.reset();
+      } else {
+        try {
+          layout.format = parse_texture_format(v, c.option + " format");
+        } catch (const InputError&) {
+          bad_value(c, "format", v, "trace, rgba8, bc1, bc3, bc4, bc5, bc7, astc4x4 or astc8x8");
+        }
+      }
+      if (std::none_of(layouts.begin(), layouts.end(), [&](const LayoutSpec& l) {
+            return l == layout;
+          }))
+        layouts.push_back(layout);
+    }
+  s.layouts = std::move(layouts);
+}
+
 std::uint64_t one_size(const std::vector<std::string>& values, const Context& c, const char* key) {
   return parse_byte_size(values.front(), c.option + " " + key);
 }
@@ -241,6 +265,10 @@ constexpr KeyRule kKeys[] = {
     {"policy", kBothKinds, true, "fifo|lru (vertex cache), fifo|lru|random|opt (byte cache)", set_vertex_policy,
      set_byte_policy},
     {"layout", kByteKey, true, "linear|block2|block4|block8|block16|morton", nullptr, set_layout},
+    {"format", kByteKey, true,
+     "texture storage, trace|rgba8|bc1|bc3|bc4|bc5|bc7|astc4x4|astc8x8 (trace: as the trace records), e.g. "
+     "format=rgba8/bc1/bc7",
+     nullptr, set_format},
     {"texel", kByteKey, false, "texel bytes, e.g. texel=4B", nullptr, set_texel},
     {"align", kByteKey, false, "level alignment, e.g. align=4KiB", nullptr, set_align},
     {"seed", kByteKey, false, "the random policy's seed, e.g. seed=1", nullptr, set_seed},
@@ -372,7 +400,7 @@ CacheSpec parse_cache_spec(const std::string& text, const std::string& option) {
   // align apply to every layout, whichever order they were written in.
   const auto rank = [](const Item& i) {
     const std::string name = i.key->name;
-    return name == "model" ? 0 : name == "layout" ? 1 : 2;
+    return name == "model" ? 0 : name == "layout" ? 1 : name == "format" ? 2 : 3;
   };
   std::stable_sort(items.begin(), items.end(), [&](const Item& a, const Item& b) { return rank(a) < rank(b); });
   for (const Item& item : items)
@@ -401,7 +429,7 @@ CacheSpec parse_cache_spec(const std::string& text, const std::string& option) {
     if (name == "pixel" && !spec.buffer)
       throw InputError(c.where("pixel= is the bytes per pixel of a depth or colour cache: add source=depth or "
                                "source=colour (a texture cache's element is texel=)"));
-    if ((name == "texel" || name == "stride" || name == "align") && spec.buffer)
+    if ((name == "texel" || name == "stride" || name == "align" || name == "format") && spec.buffer)
       throw InputError(c.where(name + "= does not apply to a " + to_string(*spec.buffer) +
                                " cache: its element is a pixel (pixel=4B)"));
     if (name == "policy" && spec.buffer &&

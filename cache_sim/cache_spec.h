@@ -17,6 +17,9 @@
 //   byte cache                      size=SIZE (required), line=SIZE (64B), assoc=N|full (4),
 //                                   policy=fifo|lru|random|opt (lru),
 //                                   layout=linear|block2|block4|block8|block16|morton (linear),
+//                                   format=trace|rgba8|bc1|bc3|bc4|bc5|bc7|astc4x4|astc8x8 (trace: the
+//                                   formats the trace records; else every texture replayed stored so,
+//                                   its blocks laid out by layout=; texture_layout.h),
 //                                   texel=SIZE (4B), align=SIZE (4KiB), seed=N (1),
 //                                   source=texel|vertex|address (what the trace holds), stride=SIZE (32B),
 //                                   sector=SIZE (the line: unsectored), e.g. line=128B,sector=32B for
@@ -27,9 +30,9 @@
 //   model=attila                    ATTILA's depth and colour caches: size=16KiB,line=256B,assoc=4,
 //                                   policy=lru,layout=block8 (4 ways of 16 lines of 8x8-pixel tiles);
 //                                   keys given beside it override it
-// size, line, assoc, policy, layout and entries take alternatives; a spec with alternatives
+// size, line, assoc, policy, layout, format and entries take alternatives; a spec with alternatives
 // stands for the cross product. Expansion order (the last key varies fastest), which is the
-// row order of the sweep tables: byte caches layout, policy, line, sector, assoc, size; vertex
+// row order of the sweep tables: byte caches layout (each layout once per format), policy, line, sector, assoc, size; vertex
 // caches policy, entries, warp, primgroup (presets in the order given).
 //
 // Errors are InputErrors that name the option and the spec, and list the accepted keys or values.

@@ -25,7 +25,11 @@ void HierarchySink::texel_accesses(std::span<const TexelAccess> accesses) {
                          ", x " + std::to_string(t.x) + ", y " + std::to_string(t.y) + ", triangle " +
                          std::to_string(t.triangle) + ") lies outside the textures whose level sizes the trace " +
                          "metadata lists");
-      hierarchy.access(layout.address(t.texture, t.level, t.x, t.y), hierarchy.unit_of_pixel(t.pixel_x, t.pixel_y));
+      const std::uint32_t unit = hierarchy.unit_of_pixel(t.pixel_x, t.pixel_y);
+      if (hierarchy.config().decoded_l1)
+        hierarchy.access(layout.decoded_address(t.texture, t.level, t.x, t.y), unit, layout.decode_shift(t.texture));
+      else
+        hierarchy.access(layout.address(t.texture, t.level, t.x, t.y), unit);
     }
   }
 }

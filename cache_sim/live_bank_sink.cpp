@@ -44,12 +44,6 @@ struct LiveBankSink::FramebufferCache {
 
 const char* to_string(FramebufferBuffer buffer) { return buffer == FramebufferBuffer::Depth ? "depth" : "colour"; }
 
-namespace {
-bool same_layout(const LayoutSpec& a, const LayoutSpec& b) {
-  return a.kind == b.kind && a.block == b.block && a.texel_bytes == b.texel_bytes && a.alignment == b.alignment;
-}
-}  // namespace
-
 LiveBankSink::LiveBankSink(CacheBankConfig config, TextureLevels textures, FrameSize frame)
     : config_(std::move(config)), textures_(std::move(textures)), frame_(frame) {
   if (!config_.framebuffer.empty() && (frame_.width == 0 || frame_.height == 0))
@@ -83,7 +77,7 @@ LiveBankSink::LiveBankSink(CacheBankConfig config, TextureLevels textures, Frame
     for (; s < streams_.size(); ++s) {
       const AddressStream& st = *streams_[s];
       if (st.kind != kind) continue;
-      if (kind == AddressStream::Kind::Texture && !same_layout(st.layout_spec, *layout)) continue;
+      if (kind == AddressStream::Kind::Texture && !(st.layout_spec == *layout)) continue;
       if (kind == AddressStream::Kind::VertexBuffer && st.stride != stride) continue;
       break;
     }

@@ -7,8 +7,13 @@
 
 namespace rastrace {
 
-LayoutSpec parse_layout(const std::string& name) {
+LayoutSpec parse_layout(const std::string& text) {
+  // "block4:bc1" is a layout with its storage format, as layout_name() prints it.
+  const std::size_t colon = text.find(':');
+  const std::string name = text.substr(0, colon);
   LayoutSpec spec;
+  if (colon != std::string::npos)
+    spec.format = parse_texture_format(std::string_view(text).substr(colon + 1), "texture layout '" + text + "' format");
   if (name == "linear") {
     spec.kind = LayoutKind::Linear;
   } else if (name == "morton") {
@@ -24,13 +29,14 @@ LayoutSpec parse_layout(const std::string& name) {
 }
 
 std::string layout_name(const LayoutSpec& spec) {
+  const std::string format = spec.format ? std::string(":") + to_string(*spec.format) : "";
   switch (spec.kind) {
     case LayoutKind::Linear:
-      return "linear";
+      return "linear" + format;
     case LayoutKind::Block:
-      return "block" + std::to_string(spec.block);
+      return "block" + std::to_string(spec.block) + format;
     default:
-      return "morton";
+      return "morton" + format;
   }
 }
 
@@ -68,28 +74,47 @@ TextureLayout::TextureLayout(const LayoutSpec& spec, const TextureLevels& textur
       Level level;
       level.width = size.width;
       level.height = size.height;
-      std::uint64_t texels = 0;
+      level.format = spec.format.value_or(size.format);
+      const BlockShape shape = block_shape(level.format);
+      if (is_compressed(level.format)) {
+        if (spec.alignment < shape.bytes)
+          throw InputError("level alignment " + std::to_string(spec.alignment) + " bytes: a " +
+                           to_string(level.format) + " texture needs at least its " + std::to_string(shape.bytes) +
+                           "-byte blocks");
+        level.unit_shift_x = static_cast<std::uint32_t>(std::countr_zero(shape.width));
+        level.unit_shift_y = static_cast<std::uint32_t>(std::countr_zero(shape.height));
+        level.unit_bytes_shift = static_cast<std::uint32_t>(std::countr_zero(shape.bytes));
+        const std::uint64_t decoded = std::uint64_t{shape.width} * shape.height * spec.texel_bytes;
+        level.decode_shift = static_cast<std::uint32_t>(std::countr_zero(decoded) - std::countr_zero(shape.bytes));
+      } else {
+        level.unit_bytes_shift = texel_shift_;
+      }
+      // The grid of units the layout orders: texels, or blocks with partial edge blocks counted whole.
+      const std::uint32_t units_w = ((size.width - 1) >> level.unit_shift_x) + 1;
+      const std::uint32_t units_h = ((size.height - 1) >> level.unit_shift_y) + 1;
+      level.units_per_row = units_w;
+      std::uint64_t units = 0;
       switch (spec.kind) {
         case LayoutKind::Linear:
-          texels = std::uint64_t{size.width} * size.height;
+          units = std::uint64_t{units_w} * units_h;
           break;
         case LayoutKind::Block: {
-          level.blocks_per_row = (size.width + spec.block - 1) >> block_shift_;
-          const std::uint64_t rows = (size.height + spec.block - 1) >> block_shift_;
-          texels = (rows * level.blocks_per_row) << (2 * block_shift_);
+          level.blocks_per_row = (units_w + spec.block - 1) >> block_shift_;
+          const std::uint64_t rows = (units_h + spec.block - 1) >> block_shift_;
+          units = (rows * level.blocks_per_row) << (2 * block_shift_);
           break;
         }
         default: {
-          const std::uint32_t wb = static_cast<std::uint32_t>(std::bit_width(std::bit_ceil(size.width)) - 1);
-          const std::uint32_t hb = static_cast<std::uint32_t>(std::bit_width(std::bit_ceil(size.height)) - 1);
+          const std::uint32_t wb = static_cast<std::uint32_t>(std::bit_width(std::bit_ceil(units_w)) - 1);
+          const std::uint32_t hb = static_cast<std::uint32_t>(std::bit_width(std::bit_ceil(units_h)) - 1);
           level.square_bits = std::min(wb, hb);
-          texels = std::uint64_t{1} << (wb + hb);
+          units = std::uint64_t{1} << (wb + hb);
           break;
         }
       }
       next = (next + spec.alignment - 1) & ~(spec.alignment - 1);
       level.base = next;
-      next += texels << texel_shift_;
+      next += units << level.unit_bytes_shift;
       levels_.push_back(level);
     }
   }

@@ -32,9 +32,9 @@ HierarchySpec parse_hierarchy(const HierarchyRequest& request) {
     if (k == 0) {
       out.layout = choice.layout;
     } else if (text.find("layout=") != std::string::npos || text.find("texel=") != std::string::npos ||
-               text.find("align=") != std::string::npos) {
-      throw InputError(where + ": layout=, texel= and align= belong to the L1 spec (they map texels to bytes "
-                               "once, for every level)");
+               text.find("align=") != std::string::npos || text.find("format=") != std::string::npos) {
+      throw InputError(where + ": layout=, texel=, align= and format= belong to the L1 spec (they map texels to "
+                               "bytes once, for every level)");
     }
     try {
       validate(choice.cache);
@@ -47,6 +47,7 @@ HierarchySpec parse_hierarchy(const HierarchyRequest& request) {
   out.hierarchy.tile = request.tile;
   out.hierarchy.inclusion = parse_inclusion(request.inclusion);
   out.hierarchy.element_bytes = out.layout.texel_bytes;
+  out.hierarchy.decoded_l1 = request.decoded_l1;
   // The levels' own checks (sector sizes, opt), named by level.
   CacheHierarchy check(out.hierarchy);
   return out;
@@ -63,6 +64,7 @@ Table hierarchy_table(TableParameters parameters, const HierarchySpec& spec, con
   t.parameters.emplace_back("inclusion", to_string(h.inclusion));
   t.parameters.emplace_back("layout", layout_name(spec.layout));
   t.parameters.emplace_back("texel_bytes", spec.layout.texel_bytes);
+  t.parameters.emplace_back("decoded_l1", h.decoded_l1 ? "yes" : "no");
   const std::vector<LevelStats> stats = hierarchy.stats();
   const double reduction = stats.back().bytes_fetched
                                ? double(stats.front().bytes_requested) / double(stats.back().bytes_fetched)

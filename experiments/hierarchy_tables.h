@@ -6,6 +6,8 @@
 //   --units N        L1 copies (texture units), 1 by default
 //   --tile PIXELS    side of the screen tiles dealt out to the units (16)
 //   --inclusion inclusive|non-inclusive  (non-inclusive)
+//   --decoded-l1     the L1 holds decoded texels, the levels below compressed blocks (for textures
+//                    the trace or the L1's format= stores block-compressed; cache_hierarchy.h)
 // A hierarchy table has one row per level; its parameters state the whole configuration and the
 // bandwidth reduction (bytes the sampler requested / bytes fetched from memory by the last level).
 #pragma once
@@ -25,10 +27,12 @@ struct HierarchyRequest {
   std::uint32_t units = 1;
   std::uint32_t tile = 16;
   std::string inclusion = "non-inclusive";
+  bool decoded_l1 = false;
 };
 
 // Throws InputError naming --level and the spec (alternatives, a vertex cache, a depth or colour
-// cache, policy=opt, source=vertex, a lower level's own layout).
+// cache, policy=opt, source=vertex, a lower level's own layout or format, a decoded L1 alone or
+// inclusive).
 HierarchySpec parse_hierarchy(const HierarchyRequest& request);
 
 using TableParameters = std::vector<std::pair<std::string, TableCell>>;

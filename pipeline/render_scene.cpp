@@ -60,7 +60,8 @@ TextureLevels texture_levels(const Scene& scene) {
   for (const Texture& texture : scene.textures) {
     std::vector<LevelSize> sizes;
     for (const Image& image : texture.levels)
-      sizes.push_back(LevelSize{static_cast<std::uint32_t>(image.width), static_cast<std::uint32_t>(image.height)});
+      sizes.push_back(
+          LevelSize{static_cast<std::uint32_t>(image.width), static_cast<std::uint32_t>(image.height), texture.format});
     levels.push_back(std::move(sizes));
   }
   return levels;

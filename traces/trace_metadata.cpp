@@ -1,5 +1,7 @@
 #include "traces/trace_metadata.h"
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
@@ -26,6 +28,15 @@ std::string metadata_to_json(const TraceMetadata& m) {
     textures.push_back(t);
   }
   j["textures"] = textures;
+  const auto compressed = [](const std::vector<LevelSize>& levels) {
+    return !levels.empty() && is_compressed(levels.front().format);
+  };
+  if (std::any_of(m.textures.begin(), m.textures.end(), compressed)) {
+    nlohmann::json formats = nlohmann::json::array();
+    for (const auto& levels : m.textures)
+      formats.push_back(to_string(levels.empty() ? TextureFormat::Rgba8 : levels.front().format));
+    j["texture_formats"] = formats;
+  }
   j["extra"] = m.extra;
   return j.dump();
 }
@@ -54,6 +65,17 @@ TraceMetadata metadata_from_json(const std::string& text, const std::string& fil
         levels.push_back(level);
       }
       m.textures.push_back(std::move(levels));
+    }
+    if (j.contains("texture_formats")) {
+      const auto& formats = j.at("texture_formats");
+      if (!formats.is_array() || formats.size() != m.textures.size())
+        throw InputError(file + ": metadata header: texture_formats: expected an array of " +
+                         std::to_string(m.textures.size()) + " format names, one per texture");
+      for (std::size_t i = 0; i < formats.size(); ++i) {
+        const TextureFormat format = parse_texture_format(
+            formats.at(i).get<std::string>(), file + ": metadata header: texture_formats[" + std::to_string(i) + "]");
+        for (LevelSize& level : m.textures[i]) level.format = format;
+      }
     }
     if (j.contains("extra")) m.extra = j.at("extra").get<std::map<std::string, std::string>>();
   } catch (const nlohmann::json::exception& e) {

@@ -113,7 +113,7 @@ TEST(CacheSpec, VertexAlternativesExpandPolicyThenEntries) {
 TEST(CacheSpec, ErrorsNameTheOptionTheSpecAndWhatIsAccepted) {
   EXPECT_EQ(error_of("size=16KiB,lines=64B"),
             "--cache 'size=16KiB,lines=64B': unknown key 'lines': expected one of entries, model, warp, primgroup, "
-            "size, line, sector, assoc, policy, layout, texel, align, seed, source, stride, pixel");
+            "size, line, sector, assoc, policy, layout, format, texel, align, seed, source, stride, pixel");
   EXPECT_EQ(error_of("size=16KiB,size=8KiB"), "--cache 'size=16KiB,size=8KiB': key 'size' given twice");
   EXPECT_EQ(error_of("size=16KiB,,line=64B"),
             "--cache 'size=16KiB,,line=64B': empty item; expected key=value items separated by ','");
@@ -145,7 +145,7 @@ TEST(CacheSpec, ErrorsNameTheOptionTheSpecAndWhatIsAccepted) {
   EXPECT_THAT(error_of("size=lots"), HasSubstr("--cache size: 'lots': expected a byte size"));
   EXPECT_EQ(error_of(""),
             "--cache: empty cache spec; expected key=value items (entries, model, warp, primgroup, size, line, sector, "
-            "assoc, policy, layout, texel, align, seed, source, stride, pixel)");
+            "assoc, policy, layout, format, texel, align, seed, source, stride, pixel)");
   EXPECT_THAT(error_of("size=1KiB,big"),
               HasSubstr("item 'big': expected key=value, with key one of entries, model, warp, primgroup, size"));
 }
