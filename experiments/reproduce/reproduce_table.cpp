@@ -42,6 +42,7 @@ Table reproduction_table(const ReproduceOptions& options) {
       {"sander", [](const ReproduceOptions&) { return reproduce_sander2008(); }},
       {"forsyth", [](const ReproduceOptions&) { return reproduce_forsyth(); }},
       {"hakura", [](const ReproduceOptions&) { return reproduce_hakura(); }},
+      // ANISO-MERGE {"hakura-compressed", [](const ReproduceOptions&) { return reproduce_hakura_compressed(); }},
   };
   std::vector<std::string> wanted;
   std::stringstream list(options.papers);
@@ -49,11 +50,13 @@ Table reproduction_table(const ReproduceOptions& options) {
     bool known = name == "all";
     for (const auto& [paper, run] : papers) known |= name == paper;
     if (!known)
-      throw InputError("--paper '" + name + "': expected all, castano, hoppe, yang, yang-texture, sander, forsyth or hakura");
+      throw InputError("--paper '" + name + "': expected all, castano, hoppe, yang, yang-texture, sander, forsyth, hakura or "
+                       "hakura-compressed");
     wanted.push_back(name);
   }
   if (wanted.empty())
-    throw InputError("--paper '': expected all, castano, hoppe, yang, yang-texture, sander, forsyth or hakura");
+    throw InputError("--paper '': expected all, castano, hoppe, yang, yang-texture, sander, forsyth, hakura or "
+                       "hakura-compressed");
 
   Table table;
   table.title = "Published figures (REFERENCE.md) and rastrace's";
