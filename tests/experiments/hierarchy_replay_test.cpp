@@ -72,7 +72,7 @@ TEST(HierarchyReplay, UnitsSplitTheL1AccessesAndBadLevelsAreNamed) {
   const testing::CommandRun bad = testing::run_rastrace(
       {"replay", trace, "--level", "size=4KiB,layout=block4", "--level", "size=64KiB,layout=morton"});
   EXPECT_NE(bad.exit_code, 0);
-  EXPECT_NE(bad.err.find("(L2): layout=, texel= and align= belong to the L1 spec"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("(L2): layout=, texel=, align= and format= belong to the L1 spec"), std::string::npos) << bad.err;
   const testing::CommandRun none = testing::run_rastrace({"replay", trace});
   EXPECT_NE(none.exit_code, 0);
   EXPECT_NE(none.err.find("expected --cache SPEC or --level SPEC"), std::string::npos) << none.err;
