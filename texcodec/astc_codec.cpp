@@ -12,9 +12,11 @@ namespace rastrace::texcodec {
 
 namespace {
 
-// astcenc's "fast" preset (effort 10 of 100): a 1024x1024 level in well under a second on two
-// cores at 4x4 blocks; "medium" is several times slower for a fraction of a dB on our textures.
-const float kEffort = ASTCENC_PRE_FAST;
+// astcenc's "fastest" preset (effort 0 of 100), on every core: a noisy 1024x1024 level takes
+// 1.3-1.9 s to encode at 4x4 and 0.13-0.2 s at 8x8 on the loaded 2-core machine
+// (docs/PERFORMANCE.md), where "fast" (effort 10) took 3.5 s and 0.18 s in the same conditions
+// for 0.1 dB more on the test images (33.49 against 33.38 dB at 4x4, 29.64 against 29.62 dB at 8x8).
+const float kEffort = ASTCENC_PRE_FASTEST;
 
 void check(astcenc_error status, const char* step) {
   if (status != ASTCENC_SUCCESS)

@@ -10,8 +10,9 @@
 
 namespace rastrace::texcodec {
 
-// libsquish, BC1/BC3/BC4/BC5 with its default cluster fit: a 1024x1024 level encodes in about a
-// second on one core, where the iterative cluster fit takes several times longer for ~0.1 dB.
+// libsquish, BC1/BC3/BC4/BC5 with its default cluster fit (one thread): a noisy 1024x1024 level
+// takes about 1.2 s of CPU for BC1 and BC3, 0.04-0.06 s for BC4 and BC5 (docs/PERFORMANCE.md).
+// The range fit is faster and visibly worse; the iterative cluster fit slower still.
 std::vector<std::uint8_t> squish_encode(TextureFormat format, int width, int height,
                                         std::span<const std::uint8_t> rgba);
 
