@@ -107,14 +107,22 @@ struct GlCompressedFormat {
 
 GlCompressedFormat gl_compressed_format(TextureFormat format) {
   switch (format) {
-    case TextureFormat::Bc1: return {GL_COMPRESSED_RGBA_S3TC_DXT1_EXT, "GL_EXT_texture_compression_s3tc"};
-    case TextureFormat::Bc3: return {GL_COMPRESSED_RGBA_S3TC_DXT5_EXT, "GL_EXT_texture_compression_s3tc"};
-    case TextureFormat::Bc4: return {GL_COMPRESSED_RED_RGTC1, "GL_ARB_texture_compression_rgtc"};
-    case TextureFormat::Bc5: return {GL_COMPRESSED_RG_RGTC2, "GL_ARB_texture_compression_rgtc"};
-    case TextureFormat::Bc7: return {GL_COMPRESSED_RGBA_BPTC_UNORM, "GL_ARB_texture_compression_bptc"};
-    case TextureFormat::Astc4x4: return {GL_COMPRESSED_RGBA_ASTC_4x4_KHR, "GL_KHR_texture_compression_astc_ldr"};
-    case TextureFormat::Astc8x8: return {GL_COMPRESSED_RGBA_ASTC_8x8_KHR, "GL_KHR_texture_compression_astc_ldr"};
-    case TextureFormat::Rgba8: break;
+    case TextureFormat::Bc1:
+      return {GL_COMPRESSED_RGBA_S3TC_DXT1_EXT, "GL_EXT_texture_compression_s3tc"};
+    case TextureFormat::Bc3:
+      return {GL_COMPRESSED_RGBA_S3TC_DXT5_EXT, "GL_EXT_texture_compression_s3tc"};
+    case TextureFormat::Bc4:
+      return {GL_COMPRESSED_RED_RGTC1, "GL_ARB_texture_compression_rgtc"};
+    case TextureFormat::Bc5:
+      return {GL_COMPRESSED_RG_RGTC2, "GL_ARB_texture_compression_rgtc"};
+    case TextureFormat::Bc7:
+      return {GL_COMPRESSED_RGBA_BPTC_UNORM, "GL_ARB_texture_compression_bptc"};
+    case TextureFormat::Astc4x4:
+      return {GL_COMPRESSED_RGBA_ASTC_4x4_KHR, "GL_KHR_texture_compression_astc_ldr"};
+    case TextureFormat::Astc8x8:
+      return {GL_COMPRESSED_RGBA_ASTC_8x8_KHR, "GL_KHR_texture_compression_astc_ldr"};
+    case TextureFormat::Rgba8:
+      break;
   }
   return {GL_RGBA8, ""};
 }
@@ -130,12 +138,13 @@ std::string upload_levels(const Texture& texture) {
   const bool compressed = is_compressed(texture.format) && texture.blocks.size() == texture.levels.size();
   const GlCompressedFormat gl = gl_compressed_format(texture.format);
   if (compressed && !has_extension(gl.extension))
-    return std::string("the driver does not expose ") + gl.extension + " for " + to_string(texture.format) + " textures";
+    return std::string("the driver does not expose ") + gl.extension + " for " + to_string(texture.format) +
+           " textures";
   for (std::size_t level = 0; level < texture.levels.size(); ++level) {
     const Image& image = texture.levels[level];
     if (compressed)
-      glCompressedTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(level), gl.internal_format, image.width, image.height,
-                             0, static_cast<GLsizei>(texture.blocks[level].size()), texture.blocks[level].data());
+      glCompressedTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(level), gl.internal_format, image.width, image.height, 0,
+                             static_cast<GLsizei>(texture.blocks[level].size()), texture.blocks[level].data());
     else
       glTexImage2D(GL_TEXTURE_2D, static_cast<GLint>(level), GL_RGBA8, image.width, image.height, 0, GL_RGBA,
                    GL_UNSIGNED_BYTE, image.rgba.data());
