@@ -1,8 +1,8 @@
-// The spider (a built-in scene with its own JPEG textures) stored as BC1 and as BC7, drawn by
-// rastrace (sampling texcodec's decoded texels) and by OSMesa (softpipe and llvmpipe, given the
+// The spider (a built-in scene with its own JPEG textures) stored as BC1, BC7 and ASTC 4x4, drawn
+// by rastrace (sampling texcodec's decoded texels) and by OSMesa (softpipe and llvmpipe, given the
 // same blocks with glCompressedTexImage2D): the images must meet the cross-check's bar of
 // tests/reference (PSNR >= 40 dB against both drivers), which holds only if both decode the
-// blocks alike.
+// blocks alike. For ASTC this compares astcenc's decoder with Mesa's own.
 #include <cstdio>
 
 #include <gtest/gtest.h>
@@ -57,7 +57,8 @@ TEST_P(CompressedSpider, MatchesOsmesaDecodingTheSameBlocksAbove40Db) {
   EXPECT_GE(psnr_against(scene, ReferenceDriver::Softpipe, LodFormula::MaxComponent), 40.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Bc1AndBc7, CompressedSpider, ::testing::Values(TextureFormat::Bc1, TextureFormat::Bc7),
+INSTANTIATE_TEST_SUITE_P(Bc1Bc7AndAstc, CompressedSpider,
+                         ::testing::Values(TextureFormat::Bc1, TextureFormat::Bc7, TextureFormat::Astc4x4),
                          [](const auto& info) { return std::string(to_string(info.param)); });
 
 }  // namespace
