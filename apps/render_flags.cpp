@@ -25,6 +25,9 @@ void add_scene_render_flags(CLI::App& command, SceneRenderFlags& flags) {
   command.add_flag("--hiz", flags.hiz, "Hierarchical Z: reject 2x2 quads against each 8x8 tile's farthest depth");
   command.add_option("--threads", flags.threads,
                      "Raster threads (default: every core); images and traces are the same for any count");
+  command.add_option("--texture-format", flags.texture_format,
+                     "Store every texture as rgba8, bc1, bc3, bc4, bc5, bc7, astc4x4 or astc8x8: each mip level is "
+                     "encoded and decoded at load (default: each texture's format in the scene file, else rgba8)");
   command.add_option("--order", flags.order, "Triangle ordering (rastrace reorder --help lists them)")
       ->capture_default_str();
   command.add_option("--order-cache", flags.order_cache, "Cache size the ordering optimizes for")->check(whole_number(1, 65536))

@@ -1,7 +1,9 @@
 // Rendering speed against Mesa's OSMesa on the same frames, in the same run. Three 1024x768
 // trilinear frames: bunny00 with a 1024x1024 checker of 32x32 squares on spherical UVs (75,408
 // triangles, small ones), assimp's spider with its own textures, and a checkered plane seen at a
-// grazing angle (few large triangles, deep minification).
+// grazing angle (few large triangles, deep minification). The bunny frame again with its texture
+// stored as BC1 and BC7 (one thread and every core, untraced), and BM_TextureCodec: encoding and
+// decoding a 1024x1024 level in each compressed format.
 //
 // Rows: llvmpipe with one thread (LP_NUM_THREADS=0) and with every core (LP_NUM_THREADS = the core
 // count), softpipe, each in a child process (one Gallium driver per process, the environment set
@@ -38,6 +40,7 @@
 #include "scenes/procedural.h"
 #include "scenes/scene_io.h"
 #include "scenes/texture_io.h"
+#include "texcodec/codec.h"
 #include "traces/memory_sink.h"
 #include "traces/trace_writer.h"
 
@@ -46,16 +49,18 @@ namespace {
 using namespace rastrace;
 
 constexpr int kWidth = 1024, kHeight = 768;
-constexpr const char* kSceneNames[] = {"bunny", "spider", "grazing_plane"};
+constexpr const char* kSceneNames[] = {"bunny", "spider", "grazing_plane", "bunny bc1", "bunny bc7"};
 
-Scene bunny_frame() {
+// The bunny frame with its checker stored as `format` (decoded at load: the sampler reads decoded
+// texels, so only the texels' values differ from RGBA8).
+Scene bunny_frame(TextureFormat format = TextureFormat::Rgba8) {
   Scene s;
-  s.name = "bunny00 checker 1024x768";
+  s.name = std::string("bunny00 checker 1024x768 ") + to_string(format);
   s.width = kWidth;
   s.height = kHeight;
   Texture checker;
   checker.levels = build_mip_chain(make_checker(1024, 32));
-  s.textures.push_back(checker);
+  s.textures.push_back(compress_texture(checker, format));
   SceneObject bunny;
   bunny.mesh = load_mesh(std::string(RASTRACE_DATA_DIR) + "/meshes/bunny00.off");
   project_uvs_spherical(bunny.mesh);
@@ -105,7 +110,8 @@ Scene grazing_plane_frame() {
 }
 
 const Scene& frame(std::int64_t index) {
-  static const Scene scenes[] = {bunny_frame(), spider_frame(), grazing_plane_frame()};
+  static const Scene scenes[] = {bunny_frame(), spider_frame(), grazing_plane_frame(), bunny_frame(TextureFormat::Bc1),
+                                 bunny_frame(TextureFormat::Bc7)};
   return scenes[index];
 }
 
@@ -220,6 +226,48 @@ BENCHMARK(BM_Rastrace)
     ->ArgsProduct({{0, 1, 2}, {0, 1}, {0, 1, 2}})
     ->UseManualTime()
     ->Iterations(8)
+    ->Unit(benchmark::kMillisecond);
+// The bunny frame with BC1 and BC7 textures, to set beside the rows of scene 0 (RGBA8).
+BENCHMARK(BM_Rastrace)
+    ->ArgNames({"scene", "every_core", "trace"})
+    ->ArgsProduct({{3, 4}, {0, 1}, {0}})
+    ->UseManualTime()
+    ->Iterations(8)
+    ->Unit(benchmark::kMillisecond);
+
+// Encoding then decoding one 1024x1024 level (a gradient with noise, so no block is flat) in
+// each compressed format: the load-time cost of a compressed texture's base level.
+void BM_TextureCodec(benchmark::State& state) {
+  const auto format = static_cast<TextureFormat>(state.range(0));
+  static const Image image = [] {
+    Image noisy = make_uv_gradient(1024);
+    std::uint32_t seed = 1;
+    for (std::uint8_t& v : noisy.rgba) {
+      seed = seed * 1664525u + 1013904223u;
+      v = static_cast<std::uint8_t>(std::clamp(int(v) + int(seed >> 28) - 8, 0, 255));
+    }
+    return noisy;
+  }();
+  double encode = 1e30, decode = 1e30;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<std::uint8_t> blocks = texcodec::encode_level(format, image.width, image.height, image.rgba);
+    const auto middle = std::chrono::steady_clock::now();
+    benchmark::DoNotOptimize(texcodec::decode_level(format, image.width, image.height, blocks).data());
+    const auto end = std::chrono::steady_clock::now();
+    encode = std::min(encode, std::chrono::duration<double>(middle - start).count());
+    decode = std::min(decode, std::chrono::duration<double>(end - middle).count());
+    state.SetIterationTime(std::chrono::duration<double>(end - start).count());
+  }
+  state.counters["encode_ms"] = encode * 1e3;
+  state.counters["decode_ms"] = decode * 1e3;
+  state.SetLabel(std::string(to_string(format)) + " 1024x1024");
+}
+BENCHMARK(BM_TextureCodec)
+    ->ArgName("format")
+    ->DenseRange(static_cast<int>(TextureFormat::Bc1), static_cast<int>(TextureFormat::Astc8x8))
+    ->UseManualTime()
+    ->Iterations(3)
     ->Unit(benchmark::kMillisecond);
 
 // Arguments: scene, driver (0: softpipe, 1: llvmpipe one thread, 2: llvmpipe every core).

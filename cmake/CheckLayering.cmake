@@ -10,7 +10,8 @@
 # whether or not reorder_adjacency exists.
 set(RASTRACE_MODULE_DAG
   "core:"
-  "scenes: core"
+  "texcodec: core"
+  "scenes: texcodec core"
   "traces: core"
   "cache_sim: traces core"
   "reorder: scenes cache_sim traces core"

@@ -18,6 +18,10 @@ find_package(meshoptimizer REQUIRED CONFIG)
 find_package(GTest REQUIRED CONFIG)
 find_package(benchmark REQUIRED CONFIG)
 find_package(Threads REQUIRED)
+# Block-compressed textures (texcodec/): ARM's ASTC codec and libsquish (BC1-BC5 encoder).
+find_package(astcenc REQUIRED CONFIG)
+find_library(SQUISH_LIBRARY squish REQUIRED)
+find_path(SQUISH_INCLUDE_DIR squish.h REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
 

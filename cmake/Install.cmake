@@ -16,6 +16,7 @@ set(RASTRACE_INSTALLED_MODULES
   "core: Threads nlohmann_json"
   "traces: zstd nlohmann_json"
   "cache_sim:"
+  "texcodec: astcenc OSMesa"
   "scenes: glm assimp OpenImageIO nlohmann_json"
   "reorder: meshoptimizer"
   "reorder_adjacency: lemon"

@@ -12,7 +12,9 @@
 namespace rastrace {
 
 Scene load_render_scene(const SceneRenderFlags& flags) {
-  Scene scene = load_scene(flags.scene);
+  std::optional<TextureFormat> texture_format;
+  if (!flags.texture_format.empty()) texture_format = parse_texture_format(flags.texture_format, "--texture-format");
+  Scene scene = load_scene(flags.scene, texture_format);
   if (!flags.size.empty()) {
     int w = 0, h = 0;
     char x = 0, extra = 0;

@@ -26,6 +26,7 @@ struct SceneRenderFlags {
   std::string depth_test = "early";  // early | late (raster/rasterizer.h)
   bool hiz = false;                  // hierarchical Z on 8x8 tiles
   unsigned threads = 0;              // raster threads; 0: every core (the output does not depend on it)
+  std::string texture_format;        // empty: each texture's own (the scene file's, else rgba8)
 };
 
 // The scene with the size override applied.

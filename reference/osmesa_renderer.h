@@ -2,7 +2,10 @@
 // state rastrace's pipeline uses, so both renderers draw the same frame: the same projection and
 // model-view matrices (glLoadMatrixf with camera_matrices()), glViewport, depth test GL_LESS,
 // face culling, the same light, every texture uploaded level by level from rastrace's own mip
-// chain (so both sample the same texels) with the same filters and wraps, GL_MODULATE.
+// chain (so both sample the same texels) with the same filters and wraps, GL_MODULATE. A
+// block-compressed texture is uploaded as its blocks (glCompressedTexImage2D per level: S3TC,
+// RGTC, BPTC or ASTC LDR, all exposed by softpipe and llvmpipe in Mesa 22.3), so Mesa decodes
+// the bits that texcodec decoded.
 //
 // OSMesa picks its Gallium driver (softpipe or llvmpipe) from GALLIUM_DRIVER once per process,
 // at the first context creation: a process cannot use both. Each call therefore forks a child

@@ -81,7 +81,7 @@ void frame(Scene& scene) {
 
 std::vector<std::string> builtin_scene_names() { return {"grid", "bunny", "spider"}; }
 
-Scene make_builtin_scene(const std::string& name) {
+Scene make_builtin_scene(const std::string& name, std::optional<TextureFormat> texture_format) {
   Scene scene;
   if (name == "grid") {
     scene = grid_scene();
@@ -95,7 +95,7 @@ Scene make_builtin_scene(const std::string& name) {
     throw InputError("builtin:" + name +
                      ": no such built-in scene; expected builtin:grid, builtin:bunny or builtin:spider");
   }
-  load_scene_textures(scene);
+  load_scene_textures(scene, texture_format);
   return scene;
 }
 

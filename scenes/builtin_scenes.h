@@ -7,6 +7,7 @@
 //   spider  data/assimp/OBJ/spider.obj with its own materials and textures
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,8 @@
 namespace rastrace {
 
 std::vector<std::string> builtin_scene_names();
-// name without the "builtin:" prefix; InputError listing the known names otherwise.
-Scene make_builtin_scene(const std::string& name);
+// name without the "builtin:" prefix; InputError listing the known names otherwise. The textures
+// are stored as `texture_format` when given (scene_io.h, load_scene).
+Scene make_builtin_scene(const std::string& name, std::optional<TextureFormat> texture_format = std::nullopt);
 
 }  // namespace rastrace

@@ -11,6 +11,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "core/texture_format.h"
+
 namespace rastrace {
 
 // Where a material's texture comes from: a file, or one of the procedural textures.
@@ -23,6 +25,8 @@ struct TextureSource {
   // Kind::File with the image inside the model (glTF/GLB, FBX...): the encoded image file (PNG,
   // JPEG...) as bytes; `path` then names it "model.glb#*0" (no such file on disk).
   std::shared_ptr<const std::vector<std::uint8_t>> embedded;
+  // How the texels are stored: every mip level is encoded to this format and decoded back at load.
+  TextureFormat format = TextureFormat::Rgba8;
 };
 
 struct Material {

@@ -284,7 +284,16 @@ class SceneReader {
     }
     if (!value.is_object())
       fail(where, "a texture file name, a procedural texture object or null, found " + kind(value));
-    allow_keys(value, where, {"procedural", "size", "checks"});
+    allow_keys(value, where, {"procedural", "file", "size", "checks", "format"});
+    if (value.contains("format"))
+      source.format = parse_texture_format(string(value["format"], where + ".format"), where + ".format");
+    if (value.contains("file")) {
+      if (value.contains("procedural") || value.contains("size") || value.contains("checks"))
+        fail(where, "either \"file\" or \"procedural\" (with \"size\" and \"checks\"), not both");
+      source.kind = TextureSource::Kind::File;
+      source.path = file_path(value["file"], where + ".file");
+      return source;
+    }
     const std::string name = string(required(value, where, "procedural"), where + ".procedural");
     if (name == "checker")
       source.kind = TextureSource::Kind::Checker;
@@ -385,7 +394,7 @@ void check_json_depth(const std::string& text, const std::string& path) {
   }
 }
 
-Scene load_json_scene(const std::string& path) {
+Scene load_json_scene(const std::string& path, std::optional<TextureFormat> texture_format) {
   const std::string text = read_whole_file(path);
   check_json_depth(text, path);
   json root;
@@ -419,7 +428,7 @@ Scene load_json_scene(const std::string& path) {
     throw_at_line(path, line, "column " + std::to_string(column) + ": invalid JSON: " + excerpt(message, 200));
   }
   Scene scene = SceneReader(path).read(root);
-  load_scene_textures(scene);
+  load_scene_textures(scene, texture_format);
   return scene;
 }
 
@@ -447,17 +456,19 @@ Camera frame_bounds(const glm::vec3& lo, const glm::vec3& hi, float aspect) {
   return camera;
 }
 
-void load_scene_textures(Scene& scene) {
-  std::map<std::tuple<int, std::string, int, int>, int> loaded;
+void load_scene_textures(Scene& scene, std::optional<TextureFormat> format) {
+  std::map<std::tuple<int, std::string, int, int, TextureFormat>, int> loaded;
   std::uint64_t procedural_bytes = 0;
   for (SceneObject& object : scene.objects)
     for (Material& material : object.mesh.materials) {
-      const TextureSource& source = material.texture_source;
+      TextureSource& source = material.texture_source;
+      if (format) source.format = *format;
       if (source.kind == TextureSource::Kind::None) {
         material.texture = -1;
         continue;
       }
-      const auto key = std::make_tuple(static_cast<int>(source.kind), source.path, source.size, source.checks);
+      const auto key =
+          std::make_tuple(static_cast<int>(source.kind), source.path, source.size, source.checks, source.format);
       auto it = loaded.find(key);
       if (it == loaded.end()) {
         if (source.kind != TextureSource::Kind::File) {
@@ -472,17 +483,17 @@ void load_scene_textures(Scene& scene) {
     }
 }
 
-Scene load_scene(const std::string& spec) {
-  if (spec.starts_with("builtin:")) return make_builtin_scene(spec.substr(8));
+Scene load_scene(const std::string& spec, std::optional<TextureFormat> texture_format) {
+  if (spec.starts_with("builtin:")) return make_builtin_scene(spec.substr(8), texture_format);
   std::string extension = fs::path(spec).extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension == ".json") return load_json_scene(spec);
+  if (extension == ".json") return load_json_scene(spec, texture_format);
   Scene scene;
   scene.name = spec;
   scene.objects.push_back(SceneObject{load_mesh(spec), glm::mat4(1.0f)});
   const BoundingBox box = bounding_box(scene);
   scene.camera = frame_bounds(box.lo, box.hi, static_cast<float>(scene.width) / static_cast<float>(scene.height));
-  load_scene_textures(scene);
+  load_scene_textures(scene, texture_format);
   return scene;
 }
 

@@ -5,6 +5,7 @@
 // several materials are loaded once).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include <glm/vec3.hpp>
@@ -15,8 +16,9 @@ namespace rastrace {
 
 // spec: "builtin:<name>", a path ending in .json, or any mesh file load_mesh reads.
 // InputError for a malformed scene (with its line/column for JSON syntax errors and the JSON
-// path, e.g. "objects[2].camera.fov_y", for values of the wrong shape).
-Scene load_scene(const std::string& spec);
+// path, e.g. "objects[2].camera.fov_y", for values of the wrong shape). `texture_format`, when
+// given, stores every texture in that format whatever the scene file says (render --texture-format).
+Scene load_scene(const std::string& spec, std::optional<TextureFormat> texture_format = std::nullopt);
 
 // The folder with the real data: $RASTRACE_DATA if set, else the compile-time RASTRACE_DATA_DIR.
 std::string data_directory();
@@ -25,7 +27,8 @@ std::string data_directory();
 // view for the given aspect ratio (width / height); near and far bracket the box.
 Camera frame_bounds(const glm::vec3& lo, const glm::vec3& hi, float aspect);
 
-// Fills Scene::textures from every material's TextureSource and sets Material::texture.
-void load_scene_textures(Scene& scene);
+// Fills Scene::textures from every material's TextureSource and sets Material::texture; a given
+// `format` replaces every TextureSource's format first.
+void load_scene_textures(Scene& scene, std::optional<TextureFormat> format = std::nullopt);
 
 }  // namespace rastrace

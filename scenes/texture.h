@@ -26,6 +26,7 @@ struct Texture {
   std::string name;
   std::vector<Image> levels;  // levels[0] is the base; each next level halves with floor, to 1x1
   TextureFormat format = TextureFormat::Rgba8;  // how the texels are stored in memory
+  std::vector<std::vector<std::uint8_t>> blocks;  // per level, when compressed: the encoded level
 };
 
 }  // namespace rastrace

@@ -10,6 +10,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "core/error.h"
+#include "texcodec/codec.h"
 #include "core/input_guard.h"
 #include "scenes/text_parse.h"
 
@@ -147,6 +148,19 @@ Texture load_texture(const TextureSource& source) {
       break;
   }
   texture.levels = build_mip_chain(std::move(base));
+  return compress_texture(std::move(texture), source.format);
+}
+
+Texture compress_texture(Texture texture, TextureFormat format) {
+  if (texture.format != TextureFormat::Rgba8)
+    throw InputError("compress_texture: " + texture.name + " is already " + to_string(texture.format));
+  texture.format = format;
+  if (!is_compressed(format)) return texture;
+  texture.blocks.clear();
+  for (Image& level : texture.levels) {
+    texture.blocks.push_back(texcodec::encode_level(format, level.width, level.height, level.rgba));
+    level.rgba = texcodec::decode_level(format, level.width, level.height, texture.blocks.back());
+  }
   return texture;
 }
 

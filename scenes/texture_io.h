@@ -40,8 +40,13 @@ Image make_uv_gradient(int size);
 // nearest.
 std::vector<Image> build_mip_chain(Image base);
 
-// The image a TextureSource describes (file or procedural) with its full mip chain.
-// Kind::None is an error (there is nothing to load).
+// The image a TextureSource describes (file or procedural) with its full mip chain, compressed
+// to source.format (compress_texture). Kind::None is an error (there is nothing to load).
 Texture load_texture(const TextureSource& source);
+
+// Stores an RGBA8 texture as `format`: each mip level (built from the RGBA8 base, as a GPU
+// texture's levels are) is encoded on its own, its blocks kept in Texture::blocks, and its texels
+// replaced by the decoded ones, which the sampler then reads. Rgba8 leaves the texture as it is.
+Texture compress_texture(Texture texture, TextureFormat format);
 
 }  // namespace rastrace

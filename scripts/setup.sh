@@ -13,7 +13,9 @@ packages=(
   libglm-dev              # math
   libopenimageio-dev      # image I/O and diffs
   openimageio-tools       # OpenImageIO's CMake package refers to its tools (iconvert)
-  libosmesa6-dev          # Mesa OSMesa: reference renderer (softpipe, llvmpipe)
+  libosmesa6-dev          # Mesa OSMesa: reference renderer (softpipe, llvmpipe), BC7 encoder
+  libsquish-dev           # BC1-BC5 texture encoder (texcodec/)
+  libastcenc-dev          # ASTC texture encoder and decoder (texcodec/)
   libgtest-dev libgmock-dev
   libbenchmark-dev
   libassimp-dev           # mesh and scene import
