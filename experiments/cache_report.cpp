@@ -28,6 +28,15 @@ std::vector<std::pair<std::string, TableCell>> trace_parameters(const std::strin
     p.emplace_back("resolution", std::to_string(s.metadata.width) + "x" + std::to_string(s.metadata.height));
     p.emplace_back("filter", s.metadata.filter);
     p.emplace_back("trace_tool_version", s.metadata.tool_version);
+    // A layout without ":format" replays the trace's formats: say which they are.
+    std::string formats;
+    bool compressed = false;
+    for (const auto& levels : s.metadata.textures) {
+      const TextureFormat f = levels.empty() ? TextureFormat::Rgba8 : levels.front().format;
+      compressed = compressed || is_compressed(f);
+      formats += (formats.empty() ? "" : ",") + std::string(to_string(f));
+    }
+    if (compressed) p.emplace_back("texture_formats", formats);
   }
   return p;
 }
