@@ -52,15 +52,6 @@ float compute_lod(const SamplerState& state, int width, int height, float dsdx, 
   return std::log2(rho);
 }
 
-int wrap_coordinate(int i, int size, TextureWrap wrap) {
-  if (wrap == TextureWrap::Repeat) {
-    if ((size & (size - 1)) == 0) return i & (size - 1);  // two's complement: right for i < 0 too
-    const int m = i % size;
-    return m < 0 ? m + size : m;
-  }
-  return std::clamp(i, 0, size - 1);
-}
-
 float safe_coordinate(float s) {
   if (!std::isfinite(s)) return 0.0f;
   return std::clamp(s, -kCoordinateLimit, kCoordinateLimit);

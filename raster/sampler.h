@@ -7,6 +7,7 @@
 // filters 8-bit textures in 8.8 fixed point, so the two drivers differ by up to 1/255 here).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -82,8 +83,15 @@ inline constexpr float kCoordinateLimit = 65536.0f;
 float safe_coordinate(float s);
 
 // Texel index i of a level `size` texels wide, wrapped: modulo size for REPEAT, clamped for
-// CLAMP_TO_EDGE.
-int wrap_coordinate(int i, int size, TextureWrap wrap);
+// CLAMP_TO_EDGE. Inline: the elliptical filter wraps every texel it reads.
+inline int wrap_coordinate(int i, int size, TextureWrap wrap) {
+  if (wrap == TextureWrap::Repeat) {
+    if ((size & (size - 1)) == 0) return i & (size - 1);  // two's complement: right for i < 0 too
+    const int m = i % size;
+    return m < 0 ? m + size : m;
+  }
+  return std::clamp(i, 0, size - 1);
+}
 
 // One level's filter (Nearest or Linear) at (s, t), recording its reads (1 or 4).
 glm::vec4 sample_level(const Texture& texture, unsigned level, TextureFilter filter, const SamplerState& state, float s,
