@@ -113,8 +113,16 @@ glm::vec4 sample_elliptical(const Texture& texture, const SamplerState& state, c
     float dq = dv * b + dq_first;
     float q = (c * dv + b * u_first) * dv + q_first;
     const int y = wrap_coordinate(v, image.height, state.wrap_t);
+    bool entered = false;
     for (int u = u0; u <= u1; ++u, q += dq, dq += ddq) {
-      if (!(q < static_cast<float>(kEllipseEdge + 1))) continue;
+      if (!(q < static_cast<float>(kEllipseEdge + 1))) {
+        // Leaving the ellipse takes dq > 0, and dq only grows (ddq > 0): rounded additions of
+        // a positive dq never lower q again, so no later texel of the row is inside. The texels
+        // read are exactly those of the whole row's scan.
+        if (entered) break;
+        continue;
+      }
+      entered = true;
       const float weight = weights[q > 0.0f ? static_cast<std::size_t>(q) : 0u];
       const int x = wrap_coordinate(u, image.width, state.wrap_s);
       recorder.record(site, footprint.level, x, y);
