@@ -12,7 +12,8 @@
 // Where EXT_texture_filter_anisotropic takes N = min(ceil(Pmax / Pmin), maxAniso) bilinear or
 // trilinear probes along the major axis at lambda = log2(Pmax / N), this filter reads one level,
 // the minor axis's: level floor(log2(Pmin)), no blend between levels, and as many texels as the
-// ellipse covers there (about pi * (Pmax / 2^level + 1) * (Pmin / 2^level + 1)). llvmpipe 22.3
+// ellipse covers there (about pi sqrt(a^2 + 1) sqrt(b^2 + 1) for axes a and b in texels of the
+// level; docs/DESIGN.md, "Anisotropic filtering"). llvmpipe 22.3
 // compares Pmin^2 with Pmin^2 * maxAniso^2 where Pmax^2 was meant, so the maximum never bounds
 // Pmax / Pmin: any maximum above 1 gives the same image, and so it does here.
 #pragma once
