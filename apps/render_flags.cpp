@@ -4,6 +4,7 @@
 #include "cache_sim/cache_spec.h"
 #include "core/error.h"
 #include "core/units.h"
+#include "raster/sampler.h"
 
 namespace rastrace {
 
@@ -12,6 +13,11 @@ void add_scene_render_flags(CLI::App& command, SceneRenderFlags& flags) {
   command.add_option("--size", flags.size, "Image size WxH (default: the scene's)");
   command
       .add_option("--filter", flags.filter, "nearest, linear, nearest_mipmap_nearest, linear_mipmap_nearest, trilinear")
+      ->capture_default_str();
+  command
+      .add_option("--aniso", flags.aniso,
+                  "Maximum anisotropy 1..16 (GL_TEXTURE_MAX_ANISOTROPY): above 1, llvmpipe's elliptical filter")
+      ->check(whole_number(1, kMaxAnisotropy))
       ->capture_default_str();
   command.add_option("--wrap", flags.wrap, "repeat or clamp_to_edge")->capture_default_str();
   command.add_option("--raster", flags.raster, "Traversal inside a triangle: scanline, tiled8 or hilbert (8x8 tiles along the screen Hilbert curve)")

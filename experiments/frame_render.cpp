@@ -172,6 +172,7 @@ Frame render_frame(const FrameSpec& spec) {
                       {"depth_test", flags.depth_test},
                       {"hiz", flags.hiz ? "on" : "off"},
                       {"image", spec.image}};
+  if (flags.aniso > 1) table.parameters.emplace_back("aniso", static_cast<std::uint64_t>(flags.aniso));
   for (auto& parameter : frame_cache_parameters(caches))
     if (parameter.first != "vcache" && parameter.first != "tcache") table.parameters.push_back(std::move(parameter));
   if (vipm) {
@@ -195,6 +196,7 @@ Frame render_frame(const FrameSpec& spec) {
                    {"fragments_shaded", "fragments shaded", 0},
                    {"depth_writes", "depth writes", 0},
                    {"texel_accesses", "texel accesses", 0},
+                   {"texels_per_textured_fragment", "texels/textured fragment", 3},
                    {"texture_misses", "texture misses", 0},
                    {"texture_miss_rate", "miss rate", 4},
                    {"bytes_per_fragment", "texture bytes/fragment", 3}};
@@ -203,8 +205,12 @@ Frame render_frame(const FrameSpec& spec) {
   const std::uint64_t shaded = vcache.batched() ? v.misses : p.vertices_shaded;
   for (const std::uint64_t count : {p.triangles, p.degenerate, p.culled, shaded}) row.emplace_back(count);
   row.emplace_back(p.triangles ? double(shaded) / double(p.triangles) : 0.0);
-  for (const std::uint64_t count : {r.fragments, r.fragments_shaded, r.fragments_passed, r.texel_reads, t.misses})
+  for (const std::uint64_t count : {r.fragments, r.fragments_shaded, r.fragments_passed, r.texel_reads})
     row.emplace_back(count);
+  // 8 for trilinear, 1 to 8 with magnification and NEAREST; with --aniso, the texels inside the
+  // ellipses (raster/anisotropy.h), each a probe.
+  row.emplace_back(r.fragments_textured ? double(r.texel_reads) / double(r.fragments_textured) : 0.0);
+  row.emplace_back(t.misses);
   row.emplace_back(t.miss_rate());
   row.emplace_back(r.fragments_shaded ? double(t.bytes_fetched) / double(r.fragments_shaded) : 0.0);
   for (TableCell& cell : frame_traffic_cells(traffic)) row.push_back(std::move(cell));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 #include <thread>
 
 #include "core/error.h"
@@ -32,6 +33,10 @@ RenderOptions render_options_from(const SceneRenderFlags& flags) {
   SamplerState& sampler = options.pipeline.raster.sampler;
   sampler = parse_filter(flags.filter);
   sampler.wrap_s = sampler.wrap_t = parse_wrap(flags.wrap);
+  if (flags.aniso < 1 || flags.aniso > static_cast<unsigned>(kMaxAnisotropy))
+    throw InputError("--aniso " + std::to_string(flags.aniso) + ": expected a maximum anisotropy from 1 to " +
+                     std::to_string(kMaxAnisotropy) + " (1: isotropic filtering)");
+  sampler.max_anisotropy = static_cast<int>(flags.aniso);
   if (flags.lod == "lengths")
     sampler.lod = LodFormula::Lengths;
   else if (flags.lod == "max_component")
@@ -63,6 +68,7 @@ TraceMetadata render_trace_metadata(const SceneRenderFlags& flags, const Scene& 
                     {"lighting", flags.lighting ? "on" : "off"},
                     {"depth_test", flags.depth_test},
                     {"hiz", flags.hiz ? "on" : "off"}};
+  if (flags.aniso > 1) metadata.extra["aniso"] = std::to_string(flags.aniso);
   return metadata;
 }
 

@@ -16,6 +16,7 @@ struct SceneRenderFlags {
   std::string scene;
   std::string size;  // "WxH"; empty: the scene's own
   std::string filter = "trilinear";
+  unsigned aniso = 1;  // GL_TEXTURE_MAX_ANISOTROPY: 1 (isotropic) to 16 (raster/anisotropy.h)
   std::string wrap = "repeat";
   std::string lod = "lengths";  // lengths | max_component (compare: auto)
   std::string raster = "scanline";
@@ -36,7 +37,8 @@ Scene load_render_scene(const SceneRenderFlags& flags);
 RenderOptions render_options_from(const SceneRenderFlags& flags);
 
 // What a trace of this render says about itself: scene, ordering, frame size, filter, texture
-// levels, and (in `extra`) raster, wrap, lod, cull, lighting, depth test and hierarchical Z. Every command that records a
+// levels, and (in `extra`) raster, wrap, lod, cull, lighting, depth test, hierarchical Z and, above
+// 1, the maximum anisotropy (absent: 1, as in traces older than it). Every command that records a
 // render's trace builds its metadata here, so all traces state the same settings.
 TraceMetadata render_trace_metadata(const SceneRenderFlags& flags, const Scene& scene, const TextureLevels& levels);
 

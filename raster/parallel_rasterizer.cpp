@@ -218,6 +218,7 @@ RasterStats ParallelRasterizer::stats() const {
     total.fragments_shaded += s.fragments_shaded;
     total.fragments_rejected_early += s.fragments_rejected_early;
     total.quads_rejected_hiz += s.quads_rejected_hiz;
+    total.fragments_textured += s.fragments_textured;
     total.texel_reads += w->texels.reads();
   }
   return total;

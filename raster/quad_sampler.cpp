@@ -90,4 +90,16 @@ void sample_quad(const Texture& texture, const SamplerState& state, f32x4 s, f32
   }
 }
 
+void sample_quad_elliptical(const Texture& texture, const SamplerState& state, const EllipticalFootprint& footprint,
+                            f32x4 s, f32x4 t, unsigned pixels, int qx, int qy, TexelRecorder& recorder, TexelSite site,
+                            f32x4 rgba[4]) {
+  for (int i = 0; i < 4; ++i) {
+    if (!(pixels >> i & 1u)) continue;
+    site.pixel_x = static_cast<std::uint16_t>(qx + (i & 1));
+    site.pixel_y = static_cast<std::uint16_t>(qy + (i >> 1));
+    const glm::vec4 c = sample_elliptical(texture, state, footprint, s[i], t[i], recorder, site);
+    rgba[i] = f32x4{c.r, c.g, c.b, c.a};
+  }
+}
+
 }  // namespace rastrace

@@ -6,6 +6,7 @@
 // wrap against it).
 #pragma once
 
+#include "raster/anisotropy.h"
 #include "raster/sampler.h"
 #include "raster/simd.h"
 #include "raster/texel_recorder.h"
@@ -20,5 +21,12 @@ namespace rastrace {
 // per pixel.
 void sample_quad(const Texture& texture, const SamplerState& state, simd::f32x4 s, simd::f32x4 t, float lambda,
                  unsigned pixels, int qx, int qy, TexelRecorder& recorder, TexelSite site, simd::f32x4 rgba[4]);
+
+// The same for the anisotropic filter with the quad's shared footprint. Each pixel's ellipse
+// holds its own number of texels, so the pixels are filtered one after another by
+// sample_elliptical itself: bits and events are the scalar sampler's by construction.
+void sample_quad_elliptical(const Texture& texture, const SamplerState& state, const EllipticalFootprint& footprint,
+                            simd::f32x4 s, simd::f32x4 t, unsigned pixels, int qx, int qy, TexelRecorder& recorder,
+                            TexelSite site, simd::f32x4 rgba[4]);
 
 }  // namespace rastrace

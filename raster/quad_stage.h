@@ -151,13 +151,20 @@ inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, 
   if constexpr (kTextured) {
     const f32x4 u = attribute(1) * w, v = attribute(2) * w;
     const Texture* texture = state.texture;
-    const float lambda = compute_lod(options.sampler, texture->levels[0].width, texture->levels[0].height,
-                                     u[1] - u[0], v[1] - v[0], u[2] - u[0], v[2] - v[0]);
+    stats.fragments_textured += static_cast<unsigned>(std::popcount(shade));
+    const float dsdx = u[1] - u[0], dtdx = v[1] - v[0], dsdy = u[2] - u[0], dtdy = v[2] - v[0];
     TexelSite site;
     site.texture = state.texture_id;
     site.triangle = state.triangle;
     f32x4 texel_colour[4];
-    sample_quad(*texture, options.sampler, u, v, lambda, shade, qx, qy, texels, site, texel_colour);
+    if (options.sampler.max_anisotropy > 1) {
+      const EllipticalFootprint footprint = elliptical_footprint(*texture, options.sampler, dsdx, dtdx, dsdy, dtdy);
+      sample_quad_elliptical(*texture, options.sampler, footprint, u, v, shade, qx, qy, texels, site, texel_colour);
+    } else {
+      const float lambda =
+          compute_lod(options.sampler, texture->levels[0].width, texture->levels[0].height, dsdx, dtdx, dsdy, dtdy);
+      sample_quad(*texture, options.sampler, u, v, lambda, shade, qx, qy, texels, site, texel_colour);
+    }
     for (int i = 0; i < 4; ++i)
       if (shade >> i & 1u) shaded[i] *= texel_colour[i];
   }

@@ -68,6 +68,7 @@ struct RasterStats {
   std::uint64_t fragments_shaded = 0;  // shaded and textured: those passed (early test), all (late)
   std::uint64_t fragments_rejected_early = 0;  // by the early test or hierarchical Z, before shading
   std::uint64_t quads_rejected_hiz = 0;        // by hierarchical Z, without a depth read
+  std::uint64_t fragments_textured = 0;        // shaded fragments that sampled a texture
   std::uint64_t texel_reads = 0;
   // Every count summed (frames drawn one after another).
   RasterStats& operator+=(const RasterStats& r) {
@@ -78,6 +79,7 @@ struct RasterStats {
     fragments_shaded += r.fragments_shaded;
     fragments_rejected_early += r.fragments_rejected_early;
     quads_rejected_hiz += r.quads_rejected_hiz;
+    fragments_textured += r.fragments_textured;
     texel_reads += r.texel_reads;
     return *this;
   }

@@ -52,21 +52,12 @@ float compute_lod(const SamplerState& state, int width, int height, float dsdx, 
   return std::log2(rho);
 }
 
-namespace {
-
-inline int wrap_coordinate(int i, int size, TextureWrap wrap) {
-  if (wrap == TextureWrap::Repeat) {
-    if ((size & (size - 1)) == 0) return i & (size - 1);  // two's complement: right for i < 0 too
-    const int m = i % size;
-    return m < 0 ? m + size : m;
-  }
-  return std::clamp(i, 0, size - 1);
-}
-
-inline float safe_coordinate(float s) {
+float safe_coordinate(float s) {
   if (!std::isfinite(s)) return 0.0f;
   return std::clamp(s, -kCoordinateLimit, kCoordinateLimit);
 }
+
+namespace {
 
 // floor() for |u| < 2^31 without a library call (the coordinates are clamped well inside).
 inline int floor_int(float u) {
@@ -108,14 +99,14 @@ glm::vec4 sample_linear(const Image& image, unsigned level, const SamplerState& 
   return top + (bottom - top) * b;
 }
 
-inline glm::vec4 sample_level(const Texture& texture, unsigned level, TextureFilter filter, const SamplerState& state,
-                              float s, float t, TexelRecorder& recorder, const TexelSite& site) {
+}  // namespace
+
+glm::vec4 sample_level(const Texture& texture, unsigned level, TextureFilter filter, const SamplerState& state, float s,
+                       float t, TexelRecorder& recorder, const TexelSite& site) {
   const Image& image = texture.levels[level];
   return filter == TextureFilter::Nearest ? sample_nearest(image, level, state, s, t, recorder, site)
                                           : sample_linear(image, level, state, s, t, recorder, site);
 }
-
-}  // namespace
 
 LevelPlan plan_levels(const Texture& texture, const SamplerState& state, float lambda) {
   LevelPlan plan;

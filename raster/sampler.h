@@ -7,6 +7,7 @@
 // filters 8-bit textures in 8.8 fixed point, so the two drivers differ by up to 1/255 here).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -42,7 +43,12 @@ struct SamplerState {
   TextureWrap wrap_s = TextureWrap::Repeat;
   TextureWrap wrap_t = TextureWrap::Repeat;
   LodFormula lod = LodFormula::Lengths;
+  // GL_TEXTURE_MAX_ANISOTROPY (EXT_texture_filter_anisotropic), 1 to kMaxAnisotropy. 1 is the
+  // isotropic filter above; more switches to the elliptical filter of raster/anisotropy.h.
+  int max_anisotropy = 1;
 };
+
+inline constexpr int kMaxAnisotropy = 16;  // what llvmpipe and softpipe advertise
 
 // Command-line names: nearest, linear, nearest_mipmap_nearest, linear_mipmap_nearest,
 // linear_mipmap_linear (alias trilinear); repeat, clamp_to_edge. Throw InputError otherwise.
@@ -72,6 +78,24 @@ LevelPlan plan_levels(const Texture& texture, const SamplerState& state, float l
 // that s * 16384 fits an int. REPEAT only needs s modulo 1, which a float beyond +-2^16 has lost
 // anyway, and CLAMP_TO_EDGE clamps such values to the edge texel either way.
 inline constexpr float kCoordinateLimit = 65536.0f;
+
+// The coordinate as sample_texture uses it: 0 where not finite, clamped to +-kCoordinateLimit.
+float safe_coordinate(float s);
+
+// Texel index i of a level `size` texels wide, wrapped: modulo size for REPEAT, clamped for
+// CLAMP_TO_EDGE. Inline: the elliptical filter wraps every texel it reads.
+inline int wrap_coordinate(int i, int size, TextureWrap wrap) {
+  if (wrap == TextureWrap::Repeat) {
+    if ((size & (size - 1)) == 0) return i & (size - 1);  // two's complement: right for i < 0 too
+    const int m = i % size;
+    return m < 0 ? m + size : m;
+  }
+  return std::clamp(i, 0, size - 1);
+}
+
+// One level's filter (Nearest or Linear) at (s, t), recording its reads (1 or 4).
+glm::vec4 sample_level(const Texture& texture, unsigned level, TextureFilter filter, const SamplerState& state, float s,
+                       float t, TexelRecorder& recorder, const TexelSite& site);
 
 // Samples `texture` at (s, t) with level of detail lambda, recording every texel read.
 // `texture_id` and the pixel and triangle in `site` go into the TexelAccess events.

@@ -189,6 +189,10 @@ std::vector<char> render_in_child(const Scene& scene, const ReferenceOptions& op
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(gl_filter(options.sampler.mag_filter)));
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, static_cast<GLint>(gl_wrap(options.sampler.wrap_s)));
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, static_cast<GLint>(gl_wrap(options.sampler.wrap_t)));
+    // Only when asked: 1 is GL's default, and setting it could change a driver's shader variant.
+    if (options.sampler.max_anisotropy > 1)
+      glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MAX_ANISOTROPY_EXT,
+                      static_cast<GLfloat>(options.sampler.max_anisotropy));
   }
   glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
 

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/error.h"
 #include "experiments/render_settings.h"
 
 namespace rastrace {
@@ -37,6 +38,27 @@ TEST(RenderTraceMetadata, StatesEverySettingOfTheRender) {
       {"cull", "back"},         {"lighting", "on"},       {"lod", "max_component"}, {"raster", "tiled8"},
       {"wrap", "clamp_to_edge"}, {"depth_test", "late"}, {"hiz", "on"}};
   EXPECT_EQ(metadata.extra, extra);
+}
+
+TEST(RenderSettings, AnisoAbove1IsInTheSamplerAndTheMetadataAndOutOfRangeIsAnInputError) {
+  SceneRenderFlags flags;
+  flags.scene = "builtin:grid";
+  EXPECT_EQ(render_options_from(flags).pipeline.raster.sampler.max_anisotropy, 1);
+  const Scene scene = load_render_scene(flags);
+  EXPECT_EQ(render_trace_metadata(flags, scene, texture_levels(scene)).extra.count("aniso"), 0u);
+  flags.aniso = 16;
+  EXPECT_EQ(render_options_from(flags).pipeline.raster.sampler.max_anisotropy, 16);
+  EXPECT_EQ(render_trace_metadata(flags, scene, texture_levels(scene)).extra.at("aniso"), "16");
+  for (const unsigned bad : {0u, 17u}) {
+    flags.aniso = bad;
+    try {
+      render_options_from(flags);
+      ADD_FAILURE() << "accepted --aniso " << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), "--aniso " + std::to_string(bad) +
+                                           ": expected a maximum anisotropy from 1 to 16 (1: isotropic filtering)");
+    }
+  }
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // The quad sampler against the scalar one: for every filter, wrap, level of detail and kind of
 // coordinate (inside, outside, far outside, not finite), the four pixels' colours are bit for bit
-// sample_texture's and their texel reads are the same events in the same order.
+// sample_texture's and their texel reads are the same events in the same order; likewise the
+// anisotropic filter against sample_elliptical at maximum anisotropy 2, 4 and 16.
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -53,6 +54,56 @@ float random_coordinate(std::mt19937& random) {
   }
 }
 
+// The coordinates of a quad's four pixels and which of them are sampled (at least one).
+struct RandomQuad {
+  simd::f32x4 s, t;
+  unsigned pixels;
+};
+RandomQuad random_quad(std::mt19937& random) {
+  RandomQuad q{};
+  for (int i = 0; i < 4; ++i) {
+    q.s[i] = random_coordinate(random);
+    q.t[i] = random_coordinate(random);
+  }
+  q.pixels = 1u + random() % 15u;
+  return q;
+}
+
+constexpr int kQuadX = 100, kQuadY = 50;
+
+// Samples the `pixels` of the quad at (kQuadX, kQuadY) one by one with scalar(s, t, recorder,
+// site) and at once with quad(recorder, site, rgba), then compares their events and colour bits.
+// `compared` counts the pixels compared.
+template <class Scalar, class Quad>
+::testing::AssertionResult quad_equals_scalar(simd::f32x4 s, simd::f32x4 t, unsigned pixels, const Scalar& scalar,
+                                              const Quad& quad, int& compared) {
+  const TexelSite site{7, 0, 0, 123456};
+  MemorySink scalar_sink, quad_sink;
+  simd::f32x4 quad_rgba[4] = {};
+  glm::vec4 scalar_rgba[4];
+  {
+    TexelRecorder scalar_recorder(&scalar_sink), quad_recorder(&quad_sink);
+    for (int i = 0; i < 4; ++i) {
+      if (!(pixels >> i & 1u)) continue;
+      TexelSite pixel_site = site;
+      pixel_site.pixel_x = static_cast<std::uint16_t>(kQuadX + (i & 1));
+      pixel_site.pixel_y = static_cast<std::uint16_t>(kQuadY + (i >> 1));
+      scalar_rgba[i] = scalar(s[i], t[i], scalar_recorder, pixel_site);
+    }
+    quad(quad_recorder, site, quad_rgba);
+  }
+  if (!same_events(scalar_sink.texels, quad_sink.texels)) return ::testing::AssertionFailure() << "texel events differ";
+  for (int i = 0; i < 4; ++i) {
+    if (!(pixels >> i & 1u)) continue;
+    for (int ch = 0; ch < 4; ++ch)
+      if (!same_bits(scalar_rgba[i][ch], quad_rgba[i][ch]))
+        return ::testing::AssertionFailure() << "pixel " << i << " s " << s[i] << " t " << t[i] << ": "
+                                             << scalar_rgba[i][ch] << " against " << quad_rgba[i][ch];
+    ++compared;
+  }
+  return ::testing::AssertionSuccess();
+}
+
 TEST(QuadSampler, EqualsTheScalarSamplerForEveryFilterWrapAndLevel) {
   std::mt19937 random(20261203);
   const Texture textures[] = {random_texture(64, 64, random), random_texture(37, 20, random),
@@ -75,40 +126,68 @@ TEST(QuadSampler, EqualsTheScalarSamplerForEveryFilterWrapAndLevel) {
               state.wrap_t = wrap_t;
               // Whole and half levels too: the boundaries of level selection.
               const float lambda = trial % 4 == 0 ? static_cast<float>(trial % 20) * 0.5f - 1.0f : lod(random);
-              simd::f32x4 s, t;
-              for (int i = 0; i < 4; ++i) {
-                s[i] = random_coordinate(random);
-                t[i] = random_coordinate(random);
-              }
-              const unsigned pixels = 1u + random() % 15u;
-              const TexelSite site{7, 0, 0, 123456};
-              MemorySink scalar_sink, quad_sink;
-              simd::f32x4 quad[4] = {};
-              glm::vec4 scalar[4];
-              {
-                TexelRecorder scalar_recorder(&scalar_sink), quad_recorder(&quad_sink);
-                for (int i = 0; i < 4; ++i) {
-                  if (!(pixels >> i & 1u)) continue;
-                  TexelSite pixel_site = site;
-                  pixel_site.pixel_x = static_cast<std::uint16_t>(100 + (i & 1));
-                  pixel_site.pixel_y = static_cast<std::uint16_t>(50 + (i >> 1));
-                  scalar[i] = sample_texture(texture, state, s[i], t[i], lambda, scalar_recorder, pixel_site);
-                }
-                sample_quad(texture, state, s, t, lambda, pixels, 100, 50, quad_recorder, site, quad);
-              }
-              ASSERT_TRUE(same_events(scalar_sink.texels, quad_sink.texels))
+              const RandomQuad q = random_quad(random);
+              const simd::f32x4 s = q.s, t = q.t;
+              const unsigned pixels = q.pixels;
+              const auto scalar = [&](float ps, float pt, TexelRecorder& recorder, const TexelSite& site) {
+                return sample_texture(texture, state, ps, pt, lambda, recorder, site);
+              };
+              const auto quad = [&](TexelRecorder& recorder, const TexelSite& site, simd::f32x4 rgba[4]) {
+                sample_quad(texture, state, s, t, lambda, pixels, kQuadX, kQuadY, recorder, site, rgba);
+              };
+              ASSERT_TRUE(quad_equals_scalar(s, t, pixels, scalar, quad, compared))
                   << "filter " << to_string(filter) << " lambda " << lambda;
-              for (int i = 0; i < 4; ++i) {
-                if (!(pixels >> i & 1u)) continue;
-                for (int ch = 0; ch < 4; ++ch)
-                  ASSERT_TRUE(same_bits(scalar[i][ch], quad[i][ch]))
-                      << "filter " << to_string(filter) << " lambda " << lambda << " pixel " << i << " s " << s[i]
-                      << " t " << t[i] << ": " << scalar[i][ch] << " against " << quad[i][ch];
-                ++compared;
-              }
             }
   // 3 textures x 5 filters x 4 wraps x 2 magnification filters x 60 quads, about 2 pixels each.
   EXPECT_GT(compared, 5000);
+}
+
+// Derivatives of each kind: isotropic, stretched along one axis up to 100:1, rotated, zero, not
+// finite.
+float random_derivative(std::mt19937& random) {
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  switch (random() % 12) {
+    case 0:
+      return 0.0f;
+    case 1:
+      return std::numeric_limits<float>::quiet_NaN();
+    case 2:
+      return unit(random) * 1.5f;  // a whole texture per pixel
+    default:
+      return unit(random) * 0.02f;
+  }
+}
+
+TEST(QuadSampler, EqualsTheScalarEllipticalFilterAtAniso2And4And16) {
+  std::mt19937 random(20261206);
+  const Texture textures[] = {random_texture(64, 64, random), random_texture(37, 20, random)};
+  const TextureWrap wraps[] = {TextureWrap::Repeat, TextureWrap::ClampToEdge};
+  int compared = 0;
+  for (const int aniso : {2, 4, 16})
+    for (const Texture& texture : textures)
+      for (const TextureWrap wrap : wraps)
+        for (const TextureFilter filter : {TextureFilter::Linear, TextureFilter::LinearMipmapLinear})
+          for (int trial = 0; trial < 40; ++trial) {
+            SamplerState state;
+            state.min_filter = filter;
+            state.wrap_s = state.wrap_t = wrap;
+            state.max_anisotropy = aniso;
+            const EllipticalFootprint footprint =
+                elliptical_footprint(texture, state, random_derivative(random), random_derivative(random),
+                                     random_derivative(random), random_derivative(random));
+            const RandomQuad q = random_quad(random);
+            const simd::f32x4 s = q.s, t = q.t;
+            const unsigned pixels = q.pixels;
+            const auto scalar = [&](float ps, float pt, TexelRecorder& recorder, const TexelSite& site) {
+              return sample_elliptical(texture, state, footprint, ps, pt, recorder, site);
+            };
+            const auto quad = [&](TexelRecorder& recorder, const TexelSite& site, simd::f32x4 rgba[4]) {
+              sample_quad_elliptical(texture, state, footprint, s, t, pixels, kQuadX, kQuadY, recorder, site, rgba);
+            };
+            ASSERT_TRUE(quad_equals_scalar(s, t, pixels, scalar, quad, compared)) << "aniso " << aniso;
+          }
+  // 3 maxima x 2 textures x 2 wraps x 2 filters x 40 quads, about 2 pixels each.
+  EXPECT_GT(compared, 700);
 }
 
 TEST(QuadSampler, ATrilinearQuadReadsEightTexelsPerPixelInPixelOrder) {

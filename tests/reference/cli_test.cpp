@@ -1,6 +1,7 @@
 // `rastrace render` and `rastrace compare` as a user runs them.
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,39 @@ TEST(CompareCommand, GridAgainstSoftpipeMeetsTheAcceptanceThresholds) {
   EXPECT_EQ(row["coverage_differs_off_edge"], 0);
   EXPECT_TRUE(std::filesystem::exists(diff));
   EXPECT_EQ(run({"compare", "builtin:grid", "--driver", "swrast"}).exit_code, 1);
+}
+
+TEST(RenderCommand, AnisoRecordsTheMaximumInTheTraceAndCountsTexelsPerTexturedFragment) {
+  const testing::TempDir dir;
+  const std::string trace = dir.file("grid.rtrace");
+  const CommandRun r = run({"render", "builtin:grid", "--size", "160x120", "-o", dir.file("grid.png"), "--aniso", "4",
+                            "--trace", trace, "--json"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json row = nlohmann::json::parse(r.out).at(0);
+  // The grid is seen at an angle: each ellipse holds more texels than trilinear's 8.
+  EXPECT_GT(row["texels_per_textured_fragment"].get<double>(), 8.0);
+  EXPECT_NEAR(row["texels_per_textured_fragment"].get<double>(),
+              row["texel_accesses"].get<double>() / row["fragments_shaded"].get<double>(), 1e-9);
+  const CommandRun trilinear = run({"render", "builtin:grid", "--size", "160x120", "-o", dir.file("t.png"), "--json"});
+  ASSERT_EQ(trilinear.exit_code, 0) << trilinear.err;
+  EXPECT_EQ(nlohmann::json::parse(trilinear.out).at(0)["texels_per_textured_fragment"].get<double>(), 8.0);
+  const std::string csv = dir.file("grid.csv");
+  const CommandRun convert = run({"trace", "convert", trace, csv});
+  ASSERT_EQ(convert.exit_code, 0) << convert.err;
+  std::ifstream in(csv);
+  std::string metadata;
+  std::getline(in, metadata);
+  EXPECT_NE(metadata.find("\"aniso\":\"4\""), std::string::npos) << metadata;
+}
+
+TEST(RenderCommand, AnisoAbove16IsAUsageErrorNamingTheRange) {
+  const testing::TempDir dir;
+  for (const char* value : {"17", "0", "-1", "4.5"}) {
+    const CommandRun r = run({"render", "builtin:grid", "-o", dir.file("a.png"), "--aniso", value});
+    EXPECT_NE(r.exit_code, 0) << value;
+    EXPECT_NE(r.err.find("--aniso: expected a whole number from 1 to 16"), std::string::npos) << r.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.file("a.png")));
 }
 
 }  // namespace
