@@ -19,6 +19,11 @@ void add_scene_render_flags(CLI::App& command, SceneRenderFlags& flags) {
                   "Maximum anisotropy 1..16 (GL_TEXTURE_MAX_ANISOTROPY): above 1, llvmpipe's elliptical filter")
       ->check(whole_number(1, kMaxAnisotropy))
       ->capture_default_str();
+  command
+      .add_option("--aniso-rule", flags.aniso_rule,
+                  "With --aniso above 1: ellipse (llvmpipe's elliptical average of one level, cross-checked) or "
+                  "probes (EXT_texture_filter_anisotropic: up to N trilinear probes along the major axis, as GPUs)")
+      ->capture_default_str();
   command.add_option("--wrap", flags.wrap, "repeat or clamp_to_edge")->capture_default_str();
   command.add_option("--raster", flags.raster, "Traversal inside a triangle: scanline, tiled8 or hilbert (8x8 tiles along the screen Hilbert curve)")
       ->capture_default_str();

@@ -172,7 +172,10 @@ Frame render_frame(const FrameSpec& spec) {
                       {"depth_test", flags.depth_test},
                       {"hiz", flags.hiz ? "on" : "off"},
                       {"image", spec.image}};
-  if (flags.aniso > 1) table.parameters.emplace_back("aniso", static_cast<std::uint64_t>(flags.aniso));
+  if (flags.aniso > 1) {
+    table.parameters.emplace_back("aniso", static_cast<std::uint64_t>(flags.aniso));
+    table.parameters.emplace_back("aniso_rule", flags.aniso_rule);
+  }
   for (auto& parameter : frame_cache_parameters(caches))
     if (parameter.first != "vcache" && parameter.first != "tcache") table.parameters.push_back(std::move(parameter));
   if (vipm) {
@@ -208,7 +211,7 @@ Frame render_frame(const FrameSpec& spec) {
   for (const std::uint64_t count : {r.fragments, r.fragments_shaded, r.fragments_passed, r.texel_reads})
     row.emplace_back(count);
   // 8 for trilinear, 1 to 8 with magnification and NEAREST; with --aniso, the texels inside the
-  // ellipses (raster/anisotropy.h), each a probe.
+  // ellipses (raster/anisotropy.h), each a probe, or 8 per trilinear probe (anisotropic_probes.h).
   row.emplace_back(r.fragments_textured ? double(r.texel_reads) / double(r.fragments_textured) : 0.0);
   row.emplace_back(t.misses);
   row.emplace_back(t.miss_rate());

@@ -37,6 +37,11 @@ RenderOptions render_options_from(const SceneRenderFlags& flags) {
     throw InputError("--aniso " + std::to_string(flags.aniso) + ": expected a maximum anisotropy from 1 to " +
                      std::to_string(kMaxAnisotropy) + " (1: isotropic filtering)");
   sampler.max_anisotropy = static_cast<int>(flags.aniso);
+  try {
+    sampler.aniso_rule = parse_anisotropy_rule(flags.aniso_rule);
+  } catch (const InputError&) {
+    throw InputError("--aniso-rule '" + flags.aniso_rule + "': expected ellipse or probes");
+  }
   if (flags.lod == "lengths")
     sampler.lod = LodFormula::Lengths;
   else if (flags.lod == "max_component")
@@ -68,7 +73,10 @@ TraceMetadata render_trace_metadata(const SceneRenderFlags& flags, const Scene& 
                     {"lighting", flags.lighting ? "on" : "off"},
                     {"depth_test", flags.depth_test},
                     {"hiz", flags.hiz ? "on" : "off"}};
-  if (flags.aniso > 1) metadata.extra["aniso"] = std::to_string(flags.aniso);
+  if (flags.aniso > 1) {
+    metadata.extra["aniso"] = std::to_string(flags.aniso);
+    metadata.extra["aniso_rule"] = flags.aniso_rule;
+  }
   return metadata;
 }
 

@@ -17,6 +17,7 @@ struct SceneRenderFlags {
   std::string size;  // "WxH"; empty: the scene's own
   std::string filter = "trilinear";
   unsigned aniso = 1;  // GL_TEXTURE_MAX_ANISOTROPY: 1 (isotropic) to 16 (raster/anisotropy.h)
+  std::string aniso_rule = "ellipse";  // ellipse (llvmpipe's) | probes (EXT_texture_filter_anisotropic's)
   std::string wrap = "repeat";
   std::string lod = "lengths";  // lengths | max_component (compare: auto)
   std::string raster = "scanline";

@@ -90,16 +90,37 @@ void sample_quad(const Texture& texture, const SamplerState& state, f32x4 s, f32
   }
 }
 
-void sample_quad_elliptical(const Texture& texture, const SamplerState& state, const EllipticalFootprint& footprint,
-                            f32x4 s, f32x4 t, unsigned pixels, int qx, int qy, TexelRecorder& recorder, TexelSite site,
-                            f32x4 rgba[4]) {
+namespace {
+
+// The quad's pixels one after another through a per-pixel filter `sample(s, t, site)`.
+template <typename PixelFilter>
+void sample_quad_per_pixel(f32x4 s, f32x4 t, unsigned pixels, int qx, int qy, TexelSite site, f32x4 rgba[4],
+                           PixelFilter sample) {
   for (int i = 0; i < 4; ++i) {
     if (!(pixels >> i & 1u)) continue;
     site.pixel_x = static_cast<std::uint16_t>(qx + (i & 1));
     site.pixel_y = static_cast<std::uint16_t>(qy + (i >> 1));
-    const glm::vec4 c = sample_elliptical(texture, state, footprint, s[i], t[i], recorder, site);
+    const glm::vec4 c = sample(s[i], t[i], site);
     rgba[i] = f32x4{c.r, c.g, c.b, c.a};
   }
+}
+
+}  // namespace
+
+void sample_quad_elliptical(const Texture& texture, const SamplerState& state, const EllipticalFootprint& footprint,
+                            f32x4 s, f32x4 t, unsigned pixels, int qx, int qy, TexelRecorder& recorder, TexelSite site,
+                            f32x4 rgba[4]) {
+  sample_quad_per_pixel(s, t, pixels, qx, qy, site, rgba, [&](float ps, float pt, const TexelSite& where) {
+    return sample_elliptical(texture, state, footprint, ps, pt, recorder, where);
+  });
+}
+
+void sample_quad_probes(const Texture& texture, const SamplerState& state, const ProbeFootprint& footprint, f32x4 s,
+                        f32x4 t, unsigned pixels, int qx, int qy, TexelRecorder& recorder, TexelSite site,
+                        f32x4 rgba[4]) {
+  sample_quad_per_pixel(s, t, pixels, qx, qy, site, rgba, [&](float ps, float pt, const TexelSite& where) {
+    return sample_probes(texture, state, footprint, ps, pt, recorder, where);
+  });
 }
 
 }  // namespace rastrace

@@ -6,6 +6,7 @@
 // wrap against it).
 #pragma once
 
+#include "raster/anisotropic_probes.h"
 #include "raster/anisotropy.h"
 #include "raster/sampler.h"
 #include "raster/simd.h"
@@ -28,5 +29,11 @@ void sample_quad(const Texture& texture, const SamplerState& state, simd::f32x4 
 void sample_quad_elliptical(const Texture& texture, const SamplerState& state, const EllipticalFootprint& footprint,
                             simd::f32x4 s, simd::f32x4 t, unsigned pixels, int qx, int qy, TexelRecorder& recorder,
                             TexelSite site, simd::f32x4 rgba[4]);
+
+// And for EXT_texture_filter_anisotropic's probes (raster/anisotropic_probes.h), pixel by pixel
+// through sample_probes, for the same reason.
+void sample_quad_probes(const Texture& texture, const SamplerState& state, const ProbeFootprint& footprint,
+                        simd::f32x4 s, simd::f32x4 t, unsigned pixels, int qx, int qy, TexelRecorder& recorder,
+                        TexelSite site, simd::f32x4 rgba[4]);
 
 }  // namespace rastrace

@@ -157,7 +157,10 @@ inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, 
     site.texture = state.texture_id;
     site.triangle = state.triangle;
     f32x4 texel_colour[4];
-    if (options.sampler.max_anisotropy > 1) {
+    if (options.sampler.max_anisotropy > 1 && options.sampler.aniso_rule == AnisotropyRule::Probes) {
+      const ProbeFootprint footprint = probe_footprint(*texture, options.sampler, dsdx, dtdx, dsdy, dtdy);
+      sample_quad_probes(*texture, options.sampler, footprint, u, v, shade, qx, qy, texels, site, texel_colour);
+    } else if (options.sampler.max_anisotropy > 1) {
       const EllipticalFootprint footprint = elliptical_footprint(*texture, options.sampler, dsdx, dtdx, dsdy, dtdy);
       sample_quad_elliptical(*texture, options.sampler, footprint, u, v, shade, qx, qy, texels, site, texel_colour);
     } else {

@@ -21,7 +21,15 @@ constexpr EnumName<TextureFilter> kFilters[] = {{TextureFilter::Nearest, "neares
 constexpr EnumName<TextureWrap> kWraps[] = {
     {TextureWrap::Repeat, "repeat"}, {TextureWrap::ClampToEdge, "clamp_to_edge"}, {TextureWrap::ClampToEdge, "clamp"}};
 
+constexpr EnumName<AnisotropyRule> kAnisotropyRules[] = {{AnisotropyRule::Ellipse, "ellipse"},
+                                                         {AnisotropyRule::Probes, "probes"}};
+
 }  // namespace
+
+AnisotropyRule parse_anisotropy_rule(const std::string& text) {
+  return parse_enum(text, kAnisotropyRules, "anisotropy rule");
+}
+const char* to_string(AnisotropyRule rule) { return enum_to_string(rule, kAnisotropyRules); }
 
 SamplerState parse_filter(const std::string& text, SamplerState base) {
   base.min_filter = parse_enum(text, kFilters, "texture filter");

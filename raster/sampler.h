@@ -37,6 +37,14 @@ enum class LodFormula : std::uint8_t {
   MaxComponent,
 };
 
+// The anisotropic filter: llvmpipe's elliptical average of one level (raster/anisotropy.h), the
+// cross-checked default, or EXT_texture_filter_anisotropic's probes along the major axis
+// (raster/anisotropic_probes.h), the model of hardware texel traffic.
+enum class AnisotropyRule : std::uint8_t { Ellipse, Probes };
+// "ellipse", "probes"; InputError otherwise.
+AnisotropyRule parse_anisotropy_rule(const std::string& text);
+const char* to_string(AnisotropyRule rule);
+
 struct SamplerState {
   TextureFilter min_filter = TextureFilter::LinearMipmapLinear;
   TextureFilter mag_filter = TextureFilter::Linear;  // Nearest or Linear only
@@ -46,6 +54,7 @@ struct SamplerState {
   // GL_TEXTURE_MAX_ANISOTROPY (EXT_texture_filter_anisotropic), 1 to kMaxAnisotropy. 1 is the
   // isotropic filter above; more switches to the elliptical filter of raster/anisotropy.h.
   int max_anisotropy = 1;
+  AnisotropyRule aniso_rule = AnisotropyRule::Ellipse;  // above 1: which anisotropic filter
 };
 
 inline constexpr int kMaxAnisotropy = 16;  // what llvmpipe and softpipe advertise

@@ -42,7 +42,7 @@ Table reproduction_table(const ReproduceOptions& options) {
       {"sander", [](const ReproduceOptions&) { return reproduce_sander2008(); }},
       {"forsyth", [](const ReproduceOptions&) { return reproduce_forsyth(); }},
       {"hakura", [](const ReproduceOptions&) { return reproduce_hakura(); }},
-      // ANISO-MERGE {"hakura-compressed", [](const ReproduceOptions&) { return reproduce_hakura_compressed(); }},
+      {"hakura-compressed", [](const ReproduceOptions&) { return reproduce_hakura_compressed(); }},
   };
   std::vector<std::string> wanted;
   std::stringstream list(options.papers);

@@ -49,6 +49,17 @@ TEST(RenderSettings, AnisoAbove1IsInTheSamplerAndTheMetadataAndOutOfRangeIsAnInp
   flags.aniso = 16;
   EXPECT_EQ(render_options_from(flags).pipeline.raster.sampler.max_anisotropy, 16);
   EXPECT_EQ(render_trace_metadata(flags, scene, texture_levels(scene)).extra.at("aniso"), "16");
+  EXPECT_EQ(render_trace_metadata(flags, scene, texture_levels(scene)).extra.at("aniso_rule"), "ellipse");
+  flags.aniso_rule = "probes";
+  EXPECT_EQ(render_options_from(flags).pipeline.raster.sampler.aniso_rule, AnisotropyRule::Probes);
+  flags.aniso_rule = "trilinear";
+  try {
+    render_options_from(flags);
+    ADD_FAILURE() << "accepted --aniso-rule trilinear";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "--aniso-rule 'trilinear': expected ellipse or probes");
+  }
+  flags.aniso_rule = "ellipse";
   for (const unsigned bad : {0u, 17u}) {
     flags.aniso = bad;
     try {

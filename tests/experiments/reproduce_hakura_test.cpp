@@ -35,5 +35,22 @@ TEST(ReproduceHakura, TheGridForThreeScenesWithTheThreeCsAddingUp) {
   EXPECT_NEAR(value(rows[9].ours), 0.410, 5e-4);   // the bunny's: below 1, outside their range
 }
 
+// The working-set knee per storage format and anisotropy (EXT's probes) on the same scenes at
+// 512x384, as measured: compression shrinks the knee, anisotropy grows it.
+TEST(ReproduceHakuraCompressed, KneesPerFormatAndAnisotropyAsMeasured) {
+  const std::vector<ReproducedFigure> rows = reproduce_hakura_compressed();
+  ASSERT_EQ(rows.size(), 27u);  // 3 scenes x 3 anisotropies x 3 formats
+  const auto knee = [&](std::size_t scene, std::size_t aniso, std::size_t format) {
+    return value(rows[scene * 9 + aniso * 3 + format].ours);
+  };
+  EXPECT_EQ(knee(0, 0, 0), 256.0);  // bunny, RGBA8, isotropic
+  EXPECT_EQ(knee(0, 0, 1), 64.0);   // bunny, BC1
+  EXPECT_EQ(knee(1, 0, 0), 32.0);   // spider, RGBA8, isotropic
+  EXPECT_EQ(knee(1, 1, 0), 128.0);  // spider, RGBA8, 4x
+  EXPECT_EQ(knee(2, 0, 0), 64.0);   // grid, RGBA8
+  EXPECT_EQ(knee(2, 0, 1), 8.0);    // grid, BC1: within their 16 KB
+  EXPECT_NE(rows[2 * 9 + 1].note.find("within their 16 KB bound"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace rastrace
