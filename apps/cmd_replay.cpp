@@ -70,6 +70,8 @@ void add_replay_command(CLI::App& app) {
   command->callback([=] {
     if (specs->empty() && hierarchy->levels.empty())
       throw InputError("replay: expected --cache SPEC or --level SPEC (a hierarchy)");
+    if (hierarchy->decoded_l1 && hierarchy->levels.empty())
+      throw InputError("--decoded-l1: expected a hierarchy to apply it to (--level L1 --level L2)");
     const TableFormat table_format = parse_table_format(*format);
     if (*per_frame) {
       if (!miss_map->empty()) throw InputError("--per-frame with --miss-map: draw the miss map in a separate replay");

@@ -55,7 +55,7 @@ void add_reproduce_command(CLI::App& app) {
   sub->add_option("--format", command->format, "md, csv, latex or json")->capture_default_str();
   sub->add_option("-o,--output", command->output, "Write the table to FILE instead of standard output");
   sub->add_option("--study", command->study,
-                  "compressed: texture bytes per fragment and miss ratio at 1-64 KiB for RGBA8, BC1 and BC7 at "
+                  "compressed: texture bytes per fragment and miss ratio at 1 KiB-256 KiB for RGBA8, BC1 and BC7 at "
                   "anisotropy 1, 4 and 16, per scene and ordering, instead of the published figures");
   sub->add_option("--plot", command->plot, "With --study: bytes per fragment against cache size (.png or .svg)");
   sub->footer(

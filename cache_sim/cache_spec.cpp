@@ -150,7 +150,7 @@ void set_layout(CacheSpec& s, const std::vector<std::string>& values, const Cont
     layout.texel_bytes = base.texel_bytes;
     layout.alignment = base.alignment;
     if (std::none_of(s.layouts.begin(), s.layouts.end(),
-                     [&](const LayoutSpec& l) { return l.kind == layout.kind && l.block == layout.block; }))
+                     [&](const LayoutSpec& l) { return l == layout; }))
       s.layouts.push_back(layout);
   }
 }
@@ -429,6 +429,10 @@ CacheSpec parse_cache_spec(const std::string& text, const std::string& option) {
     if (name == "pixel" && !spec.buffer)
       throw InputError(c.where("pixel= is the bytes per pixel of a depth or colour cache: add source=depth or "
                                "source=colour (a texture cache's element is texel=)"));
+    if (name == "layout" && spec.buffer &&
+        std::any_of(spec.layouts.begin(), spec.layouts.end(), [](const LayoutSpec& l) { return l.format.has_value(); }))
+      throw InputError(c.where("layout=...:FORMAT stores textures; a " + std::string(to_string(*spec.buffer)) +
+                               " cache lays out pixels: drop the :FORMAT"));
     if ((name == "texel" || name == "stride" || name == "align" || name == "format") && spec.buffer)
       throw InputError(c.where(name + "= does not apply to a " + to_string(*spec.buffer) +
                                " cache: its element is a pixel (pixel=4B)"));

@@ -11,6 +11,14 @@ HierarchySink::HierarchySink(const std::vector<HierarchySpec>& specs, const Text
     config.element_bytes = spec.layout.texel_bytes;
     hierarchies_.emplace_back(std::move(config));
     layouts_.emplace_back(spec.layout, textures);
+    // Decoded addresses scale compressed ones by the format's ratio: two ratios would overlap
+    // textures in the decoded space.
+    const TextureLayout& layout = layouts_.back();
+    for (std::uint32_t t = 1; spec.hierarchy.decoded_l1 && t < textures.size(); ++t)
+      if (layout.decode_shift(t) != layout.decode_shift(0))
+        throw InputError(std::string("--decoded-l1: the trace's textures are stored as ") +
+                         to_string(layout.format(0)) + " and " + to_string(layout.format(t)) +
+                         ", which decode at different ratios: name one format for all with the L1's format=");
   }
 }
 

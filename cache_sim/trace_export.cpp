@@ -77,7 +77,10 @@ std::vector<std::uint64_t> trace_addresses(const std::string& trace, const Addre
 }
 
 std::uint32_t access_bytes(const AddressExportSpec& spec) {
-  return spec.vertices ? spec.stride : spec.layout.texel_bytes;
+  if (spec.vertices) return spec.stride;
+  // A compressed layout's address is a block's first byte: the access is the whole block.
+  if (spec.layout.format && is_compressed(*spec.layout.format)) return block_shape(*spec.layout.format).bytes;
+  return spec.layout.texel_bytes;
 }
 
 void write_extended_din(const std::vector<std::uint64_t>& addresses, std::uint32_t size, std::ostream& out) {

@@ -47,7 +47,8 @@ struct CompressedStudyRow {
   std::uint64_t accesses = 0;  // texel reads
   std::uint64_t misses = 0;
   double miss_ratio = 0;
-  double bytes_per_fragment = 0;  // bytes fetched from memory per textured fragment drawn
+  double bytes_per_fragment = 0;  // bytes fetched from memory per fragment rasterized (covered pixel
+                                  // of a triangle, before the depth test)
 };
 
 // Renders and sweeps every combination. Throws InputError for a scene that fails to load or has no

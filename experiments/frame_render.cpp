@@ -95,6 +95,8 @@ Frame render_frame(const FrameSpec& spec) {
                     FrameSize{static_cast<std::uint32_t>(scene.width), static_cast<std::uint32_t>(scene.height)});
   std::vector<EventSink*> sinks = {&bank};
   std::vector<HierarchySpec> hierarchies;
+  if (spec.hierarchy.decoded_l1 && spec.hierarchy.levels.empty())
+    throw InputError("--decoded-l1: expected a hierarchy to apply it to (--level L1 --level L2)");
   if (!spec.hierarchy.levels.empty()) hierarchies.push_back(parse_hierarchy(spec.hierarchy));
   HierarchySink hierarchy_sink(hierarchies, levels);
   FrameCountsSink frame_counts(hierarchy_sink);

@@ -17,7 +17,10 @@ ProbeFootprint probe_footprint(const Texture& texture, const SamplerState& state
   }
   const bool x_major = px >= py;
   const float major = x_major ? px : py, minor = x_major ? py : px;
-  const float ratio = minor > 0.0f ? std::ceil(major / minor) : static_cast<float>(state.max_anisotropy);
+  // A line (minor 0) takes the maximum; a point (both 0: constant coordinates) one probe.
+  const float ratio = major == 0.0f  ? 1.0f
+                      : minor > 0.0f ? std::ceil(major / minor)
+                                     : static_cast<float>(state.max_anisotropy);
   f.probes = static_cast<int>(std::clamp(ratio, 1.0f, static_cast<float>(state.max_anisotropy)));
   const float rho = major / static_cast<float>(f.probes);
   f.lambda = rho > 0.0f ? std::log2(rho) : -128.0f;

@@ -9,9 +9,10 @@ namespace rastrace {
 namespace {
 
 // Beyond this many texel positions in one bounding box the filter gives up on the ellipse and
-// filters bilinearly: only a quad with near-infinite derivatives gets there (llvmpipe would
-// loop over them all), and a frame must not take hours.
-constexpr double kMaxBoxTexels = 1 << 20;
+// filters bilinearly: a footprint more than about 2,000:1 at its level (llvmpipe would loop over
+// them all). Every texel read is a trace record: a million per pixel would make a thin, stretched
+// triangle a terabyte trace.
+constexpr double kMaxBoxTexels = 1 << 14;
 
 // exp(-alpha r^2) for r^2 = i / kEllipseEdge with alpha = 2, llvmpipe's Gaussian: the weight at
 // the ellipse's edge is exp(-2), about 0.135, so every texel inside counts.

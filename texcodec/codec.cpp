@@ -49,6 +49,10 @@ std::vector<std::uint8_t> encode_level(TextureFormat format, int width, int heig
   const int padded_width = grid.columns() * grid.block_width, padded_height = grid.rows() * grid.block_height;
   switch (format) {
     case TextureFormat::Bc7:
+      // Mesa's encoder works through a GL texture: llvmpipe's and softpipe's limit is 16384 a side.
+      if (padded_width > 16384 || padded_height > 16384)
+        throw InputError("encode_level: a " + std::to_string(width) + "x" + std::to_string(height) +
+                         " level: the BC7 encoder (Mesa) takes at most 16384 texels a side");
       return mesa_bc7_encode(padded_width, padded_height, padded);
     case TextureFormat::Astc4x4:
       return astc_encode(4, padded_width, padded_height, padded);

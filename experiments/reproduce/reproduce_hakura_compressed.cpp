@@ -1,5 +1,6 @@
-// Hakura and Gupta's working-set claim (at most 16 KB in every scene, uncompressed RGBA textures,
-// isotropic trilinear filtering; REFERENCE.md) checked where it was made and on today's texture
+// Hakura and Gupta, "The design and analysis of a cache architecture for texture mapping", ISCA
+// 1997: their working-set claim (at most 16 KB in every scene, uncompressed RGBA textures,
+// isotropic trilinear filtering; docs/REFERENCE.md) checked where it was made and on today's texture
 // traffic: the knee of the miss-ratio curve per scene for RGBA8, BC1 and BC7 storage at 1x, 4x and
 // 16x anisotropy (experiments/compressed_study.h), in the file's triangle order.
 #include "experiments/compressed_study.h"

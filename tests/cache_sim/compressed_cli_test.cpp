@@ -76,6 +76,9 @@ TEST(CompressedReplay, ADecodedL1ReportsDecodedAndCompressedTraffic) {
       {"replay", trace, "--level", "size=2KiB,line=64B,assoc=4,format=bc1", "--decoded-l1"});
   EXPECT_EQ(alone.exit_code, 1);
   EXPECT_THAT(alone.err, HasSubstr("decoded L1 needs a level of compressed blocks"));
+  const auto no_hierarchy = testing::run_rastrace({"replay", trace, "--cache", "size=2KiB", "--decoded-l1"});
+  EXPECT_EQ(no_hierarchy.exit_code, 1);
+  EXPECT_THAT(no_hierarchy.err, HasSubstr("--decoded-l1: expected a hierarchy"));
   const auto lower_format = testing::run_rastrace({"replay", trace, "--level", "size=2KiB,line=64B,assoc=4",
                                                    "--level", "size=16KiB,line=64B,assoc=8,format=bc1"});
   EXPECT_EQ(lower_format.exit_code, 1);

@@ -107,6 +107,9 @@ TEST(CompressedCacheSpec, FormatMultipliesTheLayoutsAndTraceKeepsTheTracesFormat
     EXPECT_NE(std::string(e.what()).find("bc7"), std::string::npos) << e.what();
   }
   EXPECT_THROW(parse_cache_spec("source=depth,size=16KiB,format=bc1", "--zcache"), InputError);
+  EXPECT_THROW(parse_cache_spec("source=depth,size=16KiB,layout=block8:bc1", "--zcache"), InputError);
+  // Layouts that differ only in their format are two layouts.
+  EXPECT_EQ(parse_cache_spec("size=16KiB,layout=block4:bc1/block4:bc7", "--cache").layouts.size(), 2u);
 }
 
 // The naive reference's own address rule, written from the layout's definition: the unit grid
@@ -222,6 +225,18 @@ TEST(DecodedHierarchy, AnL1MissAsksTheLevelBelowForTheCompressedBytesOfItsLine) 
     EXPECT_EQ(stats[1].bytes_requested, l1_misses * (64u >> s));
     EXPECT_GT(l2_misses, 0u);
   }
+}
+
+TEST(DecodedHierarchy, TexturesThatDecodeAtDifferentRatiosAreRefused) {
+  HierarchySpec spec;
+  spec.layout = parse_layout("block4");
+  spec.hierarchy.levels = {{CacheConfig{1024, 64, 4, ReplacementPolicy::Lru, 1}, 0},
+                           {CacheConfig{4096, 64, 4, ReplacementPolicy::Lru, 1}, 0}};
+  spec.hierarchy.decoded_l1 = true;
+  const TextureLevels mixed{{{16, 16, TextureFormat::Bc1}}, {{16, 16, TextureFormat::Rgba8}}};
+  EXPECT_THROW(HierarchySink({spec}, mixed), InputError);
+  spec.layout.format = TextureFormat::Bc7;  // one format for all: accepted
+  EXPECT_NO_THROW(HierarchySink({spec}, mixed));
 }
 
 TEST(DecodedHierarchy, AloneOrInclusiveIsRefused) {

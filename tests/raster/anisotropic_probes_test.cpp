@@ -68,7 +68,8 @@ TEST(AnisotropicProbes, AnIsotropicOrDegenerateFootprintIsTheIsotropicSample) {
   EXPECT_EQ(a.reads(), b.reads());
   const ProbeFootprint nan = probe_footprint(texture, state, NAN, 0.0f, 0.0f, 1.0f / 256);
   EXPECT_EQ(nan.probes, 1);
-  // A line footprint (Pmin = 0) takes the maximum.
+  // Constant coordinates (both derivatives 0) take one probe; a line footprint (Pmin = 0) the maximum.
+  EXPECT_EQ(probe_footprint(texture, state, 0.0f, 0.0f, 0.0f, 0.0f).probes, 1);
   EXPECT_EQ(probe_footprint(texture, state, 8.0f / 256, 0.0f, 0.0f, 0.0f).probes, 16);
 }
 
