@@ -64,6 +64,8 @@ struct TexsweepCommand {
   std::string wrap = "repeat";
   std::string cull = "back";
   std::string texture_format;  // empty: each texture's own
+  unsigned aniso = 1;
+  std::string aniso_rule = "ellipse";
   SweepFlags sweep{
       .tcache = "size=1KiB..64KiB,line=64B,assoc=full,policy=fifo/lru/opt,layout=linear/block4/block8/morton",
       .retired = {}};
@@ -118,6 +120,8 @@ void run_texsweep(const TexsweepCommand& command, const CLI::App& app) {
   experiment.render.wrap = c.wrap;
   experiment.render.cull = c.cull;
   experiment.render.texture_format = c.texture_format;
+  experiment.render.aniso = c.aniso;
+  experiment.render.aniso_rule = c.aniso_rule;
   experiment.orders = split_list(c.orders, "--order");
   experiment.rasters = split_list(c.rasters, "--raster");
   experiment.texgroup_base = c.base;
@@ -167,6 +171,7 @@ void add_texsweep_command(CLI::App& app) {
   command->add_option("--cull", c->cull, "Face culling: none, back or front")->capture_default_str();
   command->add_option("--texture-format", c->texture_format,
                       "Store every texture as rgba8, bc1, bc3, bc4, bc5, bc7, astc4x4 or astc8x8 (decoded at load)");
+  add_anisotropy_flags(*command, c->aniso, c->aniso_rule);
   add_sweep_flags(*command, c->sweep);
   command->add_option("--format", c->format, "Table format: md, csv, latex or json")->capture_default_str();
   command->add_option("-o,--output", c->output, "Write the table to this file (atomically) instead of stdout");

@@ -8,22 +8,26 @@
 
 namespace rastrace {
 
+void add_anisotropy_flags(CLI::App& command, unsigned& aniso, std::string& rule) {
+  command
+      .add_option("--aniso", aniso,
+                  "Maximum anisotropy 1..16 (GL_TEXTURE_MAX_ANISOTROPY): above 1, llvmpipe's elliptical filter")
+      ->check(whole_number(1, kMaxAnisotropy))
+      ->capture_default_str();
+  command
+      .add_option("--aniso-rule", rule,
+                  "With --aniso above 1: ellipse (llvmpipe's elliptical average of one level, cross-checked) or "
+                  "probes (EXT_texture_filter_anisotropic: up to N trilinear probes along the major axis, as GPUs)")
+      ->capture_default_str();
+}
+
 void add_scene_render_flags(CLI::App& command, SceneRenderFlags& flags) {
   command.add_option("scene", flags.scene, "Scene: builtin:grid|bunny|spider, a JSON scene or a mesh file")->required();
   command.add_option("--size", flags.size, "Image size WxH (default: the scene's)");
   command
       .add_option("--filter", flags.filter, "nearest, linear, nearest_mipmap_nearest, linear_mipmap_nearest, trilinear")
       ->capture_default_str();
-  command
-      .add_option("--aniso", flags.aniso,
-                  "Maximum anisotropy 1..16 (GL_TEXTURE_MAX_ANISOTROPY): above 1, llvmpipe's elliptical filter")
-      ->check(whole_number(1, kMaxAnisotropy))
-      ->capture_default_str();
-  command
-      .add_option("--aniso-rule", flags.aniso_rule,
-                  "With --aniso above 1: ellipse (llvmpipe's elliptical average of one level, cross-checked) or "
-                  "probes (EXT_texture_filter_anisotropic: up to N trilinear probes along the major axis, as GPUs)")
-      ->capture_default_str();
+  add_anisotropy_flags(command, flags.aniso, flags.aniso_rule);
   command.add_option("--wrap", flags.wrap, "repeat or clamp_to_edge")->capture_default_str();
   command.add_option("--raster", flags.raster, "Traversal inside a triangle: scanline, tiled8 or hilbert (8x8 tiles along the screen Hilbert curve)")
       ->capture_default_str();

@@ -13,6 +13,8 @@
 namespace rastrace {
 
 void add_scene_render_flags(CLI::App& command, SceneRenderFlags& flags);
+// --aniso 1..16 and --aniso-rule ellipse|probes, for the commands that bind their own render flags.
+void add_anisotropy_flags(CLI::App& command, unsigned& aniso, std::string& rule);
 
 // One cache in the cache-spec grammar (cache_sim/cache_spec.h): "entries=16,policy=fifo" and
 // "size=16KiB,line=64B,assoc=4,policy=lru,layout=block4".

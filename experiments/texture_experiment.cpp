@@ -153,6 +153,12 @@ Table texture_experiment_table(const TextureExperiment& experiment, const std::v
       {"texel_bytes", experiment.sweep.layouts.empty() ? 4u : experiment.sweep.layouts.front().texel_bytes},
   };
   if (!experiment.render.size.empty()) table.parameters.emplace_back("size", experiment.render.size);
+  if (!experiment.render.texture_format.empty())
+    table.parameters.emplace_back("texture_format", experiment.render.texture_format);
+  if (experiment.render.aniso > 1) {
+    table.parameters.emplace_back("aniso", static_cast<std::uint64_t>(experiment.render.aniso));
+    table.parameters.emplace_back("aniso_rule", experiment.render.aniso_rule);
+  }
   table.columns = {{"order", "order", 0},
                    {"raster", "raster", 0},
                    {"size_bytes", "size", 0},

@@ -67,5 +67,28 @@ TEST(TextureFormatOption, TexsweepAcceptsItToo) {
   EXPECT_NE(bad.err.find("--texture-format"), std::string::npos) << bad.err;
 }
 
+// texsweep renders with --aniso and --aniso-rule too: 4x probes read more texels than the isotropic
+// filter on the grid, the table states both, and 17 is refused.
+TEST(TextureFormatOption, TexsweepTakesTheAnisotropyAndStatesIt) {
+  const auto sweep = [](const std::string& aniso) {
+    return testing::run_rastrace({"texsweep", "builtin:grid", "--resolution", "128x96", "--order", "strip", "--raster",
+                                  "scanline", "--aniso", aniso, "--aniso-rule", "probes", "--texture-format", "bc1",
+                                  "--tcache", "size=4KiB,layout=block4", "--format", "csv"});
+  };
+  const auto accesses = [](const std::string& csv) {
+    const std::size_t row = csv.find("\nstrip,");
+    return std::stoull(csv.substr(csv.find(",block4,", row) + 8));
+  };
+  const testing::CommandRun one = sweep("1"), four = sweep("4");
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  ASSERT_EQ(four.exit_code, 0) << four.err;
+  EXPECT_NE(four.out.find("# aniso_rule: probes"), std::string::npos) << four.out;
+  EXPECT_NE(four.out.find("# texture_format: bc1"), std::string::npos) << four.out;
+  EXPECT_GT(accesses(four.out), accesses(one.out) * 5 / 4);
+  const testing::CommandRun bad = sweep("17");
+  EXPECT_NE(bad.exit_code, 0);
+  EXPECT_NE(bad.err.find("--aniso"), std::string::npos) << bad.err;
+}
+
 }  // namespace
 }  // namespace rastrace
