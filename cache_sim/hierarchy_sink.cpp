@@ -27,6 +27,7 @@ void HierarchySink::texel_accesses(std::span<const TexelAccess> accesses) {
   for (std::size_t h = 0; h < hierarchies_.size(); ++h) {
     CacheHierarchy& hierarchy = hierarchies_[h];
     const TextureLayout& layout = layouts_[h];
+    const bool decoded = hierarchy.config().decoded_l1;
     for (const TexelAccess& t : accesses) {
       if (!layout.contains(t.texture, t.level, t.x, t.y)) [[unlikely]]
         throw InputError("texel access (texture " + std::to_string(t.texture) + ", level " + std::to_string(t.level) +
@@ -34,7 +35,7 @@ void HierarchySink::texel_accesses(std::span<const TexelAccess> accesses) {
                          std::to_string(t.triangle) + ") lies outside the textures whose level sizes the trace " +
                          "metadata lists");
       const std::uint32_t unit = hierarchy.unit_of_pixel(t.pixel_x, t.pixel_y);
-      if (hierarchy.config().decoded_l1)
+      if (decoded)
         hierarchy.access(layout.decoded_address(t.texture, t.level, t.x, t.y), unit, layout.decode_shift(t.texture));
       else
         hierarchy.access(layout.address(t.texture, t.level, t.x, t.y), unit);

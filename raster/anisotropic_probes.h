@@ -21,6 +21,7 @@ namespace rastrace {
 struct ProbeFootprint {
   int probes = 1;
   float lambda = 0.0f;
+  LevelPlan plan;                      // plan_levels at lambda, shared by every probe of the quad
   float step_s = 0.0f, step_t = 0.0f;  // the major derivative vector, in (s, t)
 };
 
@@ -28,7 +29,7 @@ ProbeFootprint probe_footprint(const Texture& texture, const SamplerState& state
                                float dtdy);
 
 // The mean of the footprint's probes at (s, t) + ((i + 0.5) / N - 0.5) * step, i = 0..N-1, each
-// a sample_texture at the footprint's lambda, every texel read recorded in probe order.
+// sampled at the footprint's planned levels (sample_planned), every texel read recorded in probe order.
 glm::vec4 sample_probes(const Texture& texture, const SamplerState& state, const ProbeFootprint& footprint, float s,
                         float t, TexelRecorder& recorder, const TexelSite& site);
 

@@ -158,9 +158,13 @@ LevelPlan plan_levels(const Texture& texture, const SamplerState& state, float l
 
 glm::vec4 sample_texture(const Texture& texture, const SamplerState& state, float s, float t, float lambda,
                          TexelRecorder& recorder, const TexelSite& site) {
+  return sample_planned(texture, state, plan_levels(texture, state, lambda), s, t, recorder, site);
+}
+
+glm::vec4 sample_planned(const Texture& texture, const SamplerState& state, const LevelPlan& plan, float s, float t,
+                         TexelRecorder& recorder, const TexelSite& site) {
   s = safe_coordinate(s);
   t = safe_coordinate(t);
-  const LevelPlan plan = plan_levels(texture, state, lambda);
   const glm::vec4 t1 = sample_level(texture, plan.first, plan.filter, state, s, t, recorder, site);
   if (!plan.blend) return t1;
   const glm::vec4 t2 = sample_level(texture, plan.first + 1, TextureFilter::Linear, state, s, t, recorder, site);

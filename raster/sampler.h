@@ -110,5 +110,9 @@ glm::vec4 sample_level(const Texture& texture, unsigned level, TextureFilter fil
 // `texture_id` and the pixel and triangle in `site` go into the TexelAccess events.
 glm::vec4 sample_texture(const Texture& texture, const SamplerState& state, float s, float t, float lambda,
                          TexelRecorder& recorder, const TexelSite& site);
+// The same with the levels already planned (plan_levels), for filters that sample many points at
+// one level of detail.
+glm::vec4 sample_planned(const Texture& texture, const SamplerState& state, const LevelPlan& plan, float s, float t,
+                         TexelRecorder& recorder, const TexelSite& site);
 
 }  // namespace rastrace

@@ -20,6 +20,7 @@
 #include "core/enum_names.h"
 #include "core/error.h"
 #include "pipeline/render_scene.h"
+#include "reference/gl_texture_format.h"
 
 namespace rastrace {
 
@@ -97,47 +98,12 @@ void put(std::vector<char>& out, const void* data, std::size_t size) {
   std::memcpy(out.data() + at, data, size);
 }
 
-// GL's name of a compressed format and the extension that exposes it. BC1 is uploaded as RGBA
-// DXT1 because texcodec decodes the three-colour mode's index 3 to transparent black, as
-// COMPRESSED_RGBA_S3TC_DXT1_EXT does (the RGB variant returns opaque black).
-struct GlCompressedFormat {
-  GLenum internal_format;
-  const char* extension;
-};
-
-GlCompressedFormat gl_compressed_format(TextureFormat format) {
-  switch (format) {
-    case TextureFormat::Bc1:
-      return {GL_COMPRESSED_RGBA_S3TC_DXT1_EXT, "GL_EXT_texture_compression_s3tc"};
-    case TextureFormat::Bc3:
-      return {GL_COMPRESSED_RGBA_S3TC_DXT5_EXT, "GL_EXT_texture_compression_s3tc"};
-    case TextureFormat::Bc4:
-      return {GL_COMPRESSED_RED_RGTC1, "GL_ARB_texture_compression_rgtc"};
-    case TextureFormat::Bc5:
-      return {GL_COMPRESSED_RG_RGTC2, "GL_ARB_texture_compression_rgtc"};
-    case TextureFormat::Bc7:
-      return {GL_COMPRESSED_RGBA_BPTC_UNORM, "GL_ARB_texture_compression_bptc"};
-    case TextureFormat::Astc4x4:
-      return {GL_COMPRESSED_RGBA_ASTC_4x4_KHR, "GL_KHR_texture_compression_astc_ldr"};
-    case TextureFormat::Astc8x8:
-      return {GL_COMPRESSED_RGBA_ASTC_8x8_KHR, "GL_KHR_texture_compression_astc_ldr"};
-    case TextureFormat::Rgba8:
-      break;
-  }
-  return {GL_RGBA8, ""};
-}
-
-bool has_extension(const char* name) {
-  const auto* extensions = reinterpret_cast<const char*>(glGetString(GL_EXTENSIONS));
-  return extensions && std::strstr(extensions, name);
-}
-
 // Every level of the bound texture: a compressed texture's own blocks (so Mesa decodes the same
 // bits texcodec did), else rastrace's RGBA8 mip chain. Returns an error message or "".
 std::string upload_levels(const Texture& texture) {
   const bool compressed = is_compressed(texture.format) && texture.blocks.size() == texture.levels.size();
   const GlCompressedFormat gl = gl_compressed_format(texture.format);
-  if (compressed && !has_extension(gl.extension))
+  if (compressed && !has_gl_extension(gl.extension))
     return std::string("the driver does not expose ") + gl.extension + " for " + to_string(texture.format) +
            " textures";
   for (std::size_t level = 0; level < texture.levels.size(); ++level) {

@@ -44,19 +44,18 @@ Table reproduction_table(const ReproduceOptions& options) {
       {"hakura", [](const ReproduceOptions&) { return reproduce_hakura(); }},
       {"hakura-compressed", [](const ReproduceOptions&) { return reproduce_hakura_compressed(); }},
   };
+  std::string expected = "expected all";
+  for (std::size_t i = 0; i < std::size(papers); ++i)
+    expected += std::string(i + 1 == std::size(papers) ? " or " : ", ") + papers[i].first;
   std::vector<std::string> wanted;
   std::stringstream list(options.papers);
   for (std::string name; std::getline(list, name, ',');) {
     bool known = name == "all";
     for (const auto& [paper, run] : papers) known |= name == paper;
-    if (!known)
-      throw InputError("--paper '" + name + "': expected all, castano, hoppe, yang, yang-texture, sander, forsyth, hakura or "
-                       "hakura-compressed");
+    if (!known) throw InputError("--paper '" + name + "': " + expected);
     wanted.push_back(name);
   }
-  if (wanted.empty())
-    throw InputError("--paper '': expected all, castano, hoppe, yang, yang-texture, sander, forsyth, hakura or "
-                       "hakura-compressed");
+  if (wanted.empty()) throw InputError("--paper '': " + expected);
 
   Table table;
   table.title = "Published figures (REFERENCE.md) and rastrace's";

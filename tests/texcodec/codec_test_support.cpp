@@ -10,6 +10,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "reference/gl_texture_format.h"
 #include "scenes/texture_io.h"
 #include "texcodec/mesa_child.h"
 
@@ -44,35 +45,14 @@ double psnr_rgba(std::span<const std::uint8_t> a, std::span<const std::uint8_t> 
   return 10.0 * std::log10(255.0 * 255.0 / (sum / double(a.size())));
 }
 
-namespace {
-
-GLenum gl_format(TextureFormat format) {
-  switch (format) {
-    case TextureFormat::Bc1:
-      return GL_COMPRESSED_RGBA_S3TC_DXT1_EXT;
-    case TextureFormat::Bc3:
-      return GL_COMPRESSED_RGBA_S3TC_DXT5_EXT;
-    case TextureFormat::Bc4:
-      return GL_COMPRESSED_RED_RGTC1;
-    case TextureFormat::Bc5:
-      return GL_COMPRESSED_RG_RGTC2;
-    case TextureFormat::Bc7:
-      return GL_COMPRESSED_RGBA_BPTC_UNORM;
-    default:
-      throw std::invalid_argument("mesa_decode: not a BC format");
-  }
-}
-
-}  // namespace
-
 std::vector<std::uint8_t> mesa_decode(TextureFormat format, int width, int height,
                                       std::span<const std::uint8_t> blocks) {
   return texcodec::run_in_gl_child("Mesa decoder", [&] {
     GLuint texture = 0;
     glGenTextures(1, &texture);
     glBindTexture(GL_TEXTURE_2D, texture);
-    glCompressedTexImage2D(GL_TEXTURE_2D, 0, gl_format(format), width, height, 0, static_cast<GLsizei>(blocks.size()),
-                           blocks.data());
+    glCompressedTexImage2D(GL_TEXTURE_2D, 0, gl_compressed_format(format).internal_format, width, height, 0,
+                           static_cast<GLsizei>(blocks.size()), blocks.data());
     if (glGetError() != GL_NO_ERROR) throw std::runtime_error("glCompressedTexImage2D failed");
     std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
