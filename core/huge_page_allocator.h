@@ -10,6 +10,8 @@
 #include <cstdint>
 #include <memory>
 #include <new>
+#include <type_traits>
+#include <utility>
 
 #include <sys/mman.h>
 
@@ -60,6 +62,28 @@ class HugePageAllocator {
 
  private:
   static std::size_t rounded(std::size_t bytes) { return (bytes + kHugePage - 1) & ~(kHugePage - 1); }
+};
+
+// A HugePageAllocator whose vectors leave the elements they grow by unset when those are
+// trivially copyable (events): storage lent to a recorder (traces/sink.h) is written right
+// after, and setting it first would store every event twice. resize() on such a vector thus
+// gives unset elements, to be overwritten.
+template <typename T>
+struct UnsetHugePageAllocator : HugePageAllocator<T> {
+  template <typename U>
+  struct rebind {
+    using other = UnsetHugePageAllocator<U>;
+  };
+  UnsetHugePageAllocator() = default;
+  template <typename U>
+  UnsetHugePageAllocator(const UnsetHugePageAllocator<U>&) {}
+  template <typename U, typename... Args>
+  void construct(U* p, Args&&... args) {
+    if constexpr (sizeof...(Args) == 0 && std::is_trivially_copyable_v<U> && std::is_trivially_destructible_v<U>)
+      static_cast<void>(p);  // implicit-lifetime: the storage is the object
+    else
+      ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
 };
 
 }  // namespace rastrace

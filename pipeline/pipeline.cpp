@@ -15,10 +15,6 @@ constexpr EnumName<CullMode> kCullModes[] = {
 
 CullMode parse_cull_mode(const std::string& text) { return parse_enum(text, kCullModes, "cull mode"); }
 
-namespace {
-constexpr std::size_t kFetchBatch = 1024;
-}
-
 Pipeline::Pipeline(Framebuffer& framebuffer, const PipelineOptions& options, EventSink* sink)
     : framebuffer_(framebuffer),
       options_(options),
@@ -29,7 +25,7 @@ Pipeline::Pipeline(Framebuffer& framebuffer, const PipelineOptions& options, Eve
   // With several raster threads, the pipeline's own events wait in the rasterizer's ordered sink
   // until the triangles before them are drawn.
   sink_ = rasterizer_.event_sink();
-  fetch_buffer_.reserve(kFetchBatch);
+  fetches_.emplace(sink_);
 }
 
 void Pipeline::set_camera(const glm::mat4& view, const glm::mat4& projection) {
@@ -37,10 +33,7 @@ void Pipeline::set_camera(const glm::mat4& view, const glm::mat4& projection) {
   projection_ = projection;
 }
 
-void Pipeline::flush_fetches() {
-  if (sink_ && !fetch_buffer_.empty()) sink_->vertex_fetches(fetch_buffer_);
-  fetch_buffer_.clear();
-}
+void Pipeline::flush_fetches() { fetches_->flush(); }
 
 void Pipeline::draw(const Mesh& mesh, const glm::mat4& model, const DrawCall& call, std::span<const Texture> textures) {
   const std::uint32_t draw = draw_number_++;
@@ -94,8 +87,8 @@ void Pipeline::draw(const Mesh& mesh, const glm::mat4& model, const DrawCall& ca
                        ": vertex " + std::to_string(v) + " >= vertex count " + std::to_string(vertex_count));
     ++stats_.lookups;
     if (sink_) {
-      fetch_buffer_.push_back(VertexFetch{v, primitive_start});
-      if (fetch_buffer_.size() == kFetchBatch) flush_fetches();
+      *fetches_->reserve(1) = VertexFetch{v, primitive_start};
+      fetches_->stored();
     }
     if (!cache_.access(v)) {
       ++stats_.vertices_shaded;

@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -26,6 +27,7 @@
 #include "pipeline/vertex_shader.h"
 #include "raster/rasterizer.h"
 #include "scenes/mesh.h"
+#include "traces/event_window.h"
 #include "traces/events.h"
 #include "traces/sink.h"
 
@@ -132,7 +134,9 @@ class Pipeline {
   glm::mat4 view_{1.0f}, projection_{1.0f};
   VertexShader shader_;
   std::vector<ShadedVertex> shaded_;  // by vertex id; valid while the vertex is in the cache
-  std::vector<VertexFetch> fetch_buffer_;
+  static constexpr std::size_t kFetchBatch = 1024;
+  // Set once sink_ is final (the rasterizer's ordered sink with several threads).
+  std::optional<EventWindow<VertexFetch, kFetchBatch>> fetches_;
   std::uint32_t draw_number_ = 0;
   std::uint32_t triangle_number_ = 0;
   PipelineStats stats_;

@@ -1,15 +1,13 @@
-// Batches texel-access events for an EventSink: a fixed buffer filled by the sampler's hot loop
-// and handed to the sink when full, so the per-event cost is a store and the virtual call is
+// Records texel-access events for an EventSink through an EventWindow (traces/event_window.h):
+// the sampler's hot loop stores an event, in the sink's own memory when it lends storage, else in
+// a buffer handed to the sink when full, so the per-event cost is a store and the virtual call is
 // paid once per kCapacity events. With no sink, recording is a counter increment.
 #pragma once
 
-#include <algorithm>
-#include <array>
 #include <cstdint>
-#include <cstring>
-#include <exception>
 #include <span>
 
+#include "traces/event_window.h"
 #include "traces/sink.h"
 
 namespace rastrace {
@@ -26,23 +24,14 @@ class TexelRecorder {
  public:
   static constexpr std::size_t kCapacity = 4096;
 
-  explicit TexelRecorder(EventSink* sink = nullptr) : sink_(sink) {}
+  explicit TexelRecorder(EventSink* sink = nullptr) : sink_(sink), window_(sink) {}
   TexelRecorder(const TexelRecorder&) = delete;
   TexelRecorder& operator=(const TexelRecorder&) = delete;
-  // Destructors must not throw: while an error unwinds (a sink's write failed) the records are
-  // dropped; a sink that fails here reports the failure again from its finish().
-  ~TexelRecorder() {
-    if (std::uncaught_exceptions() > 0) return;
-    try {
-      flush();
-    } catch (...) {
-    }
-  }
 
   void record(const TexelSite& site, unsigned level, int x, int y) {
     ++reads_;
     if (!sink_) return;
-    TexelAccess& event = buffer_[size_++];
+    TexelAccess& event = *window_.reserve(1);
     event.texture = site.texture;
     event.level = static_cast<std::uint8_t>(level);
     event.x = static_cast<std::uint32_t>(x);
@@ -50,22 +39,15 @@ class TexelRecorder {
     event.pixel_x = site.pixel_x;
     event.pixel_y = site.pixel_y;
     event.triangle = site.triangle;
-    if (size_ == kCapacity) flush();
+    window_.stored();
   }
   // Records a run of events as record() would one by one: same batches, same calls to the sink.
   void append(std::span<const TexelAccess> events) {
     reads_ += events.size();
-    if (!sink_) return;
-    while (!events.empty()) {
-      const std::size_t take = std::min(kCapacity - size_, events.size());
-      std::memcpy(buffer_.data() + size_, events.data(), take * sizeof(TexelAccess));
-      size_ += take;
-      events = events.subspan(take);
-      if (size_ == kCapacity) flush();
-    }
+    if (sink_) window_.append(events);
   }
   // The four texels of a bilinear footprint, (x0, y0), (x1, y0), (x0, y1), (x1, y1), with one
-  // branch for the four: they are stored into the buffer's slack, and a full buffer hands the
+  // branch for the four: they are stored into the window's slack, and a full buffer hands the
   // sink exactly kCapacity events, as four record() calls would.
   void record_footprint(const TexelSite& site, unsigned level, int x0, int x1, int y0, int y1) {
     reads_ += 4;
@@ -76,7 +58,7 @@ class TexelRecorder {
     event.pixel_x = site.pixel_x;
     event.pixel_y = site.pixel_y;
     event.triangle = site.triangle;
-    TexelAccess* out = buffer_.data() + size_;
+    TexelAccess* out = window_.reserve(4);
     const std::uint32_t xs[2] = {static_cast<std::uint32_t>(x0), static_cast<std::uint32_t>(x1)};
     const std::uint32_t ys[2] = {static_cast<std::uint32_t>(y0), static_cast<std::uint32_t>(y1)};
     for (int i = 0; i < 4; ++i) {
@@ -84,25 +66,16 @@ class TexelRecorder {
       out[i].x = xs[i & 1];
       out[i].y = ys[i >> 1];
     }
-    size_ += 4;
-    if (size_ >= kCapacity) {
-      sink_->texel_accesses(std::span<const TexelAccess>(buffer_.data(), kCapacity));
-      size_ -= kCapacity;
-      std::copy(buffer_.data() + kCapacity, buffer_.data() + kCapacity + size_, buffer_.data());
-    }
+    window_.stored();
   }
-  void flush() {
-    if (sink_ && size_) sink_->texel_accesses(std::span<const TexelAccess>(buffer_.data(), size_));
-    size_ = 0;
-  }
+  void flush() { window_.flush(); }
   std::uint64_t reads() const { return reads_; }
   EventSink* sink() const { return sink_; }
 
  private:
   EventSink* sink_;
-  std::size_t size_ = 0;
   std::uint64_t reads_ = 0;
-  std::array<TexelAccess, kCapacity + 4> buffer_;  // 4: record_footprint's slack
+  EventWindow<TexelAccess, kCapacity, 4> window_;  // 4: record_footprint's slack
 };
 
 }  // namespace rastrace
