@@ -45,22 +45,25 @@ class ParallelRasterizer::OrderedSink final : public EventSink {
   ParallelRasterizer& owner_;
 };
 
-// A worker's recorders flush into the buffers of the tile it is drawing.
+// A worker's recorders store straight into the buffers of the tile it is drawing.
 class ParallelRasterizer::TileSink final : public EventSink {
  public:
   explicit TileSink(bool framebuffer_events) : framebuffer_events_(framebuffer_events) {}
-  void texel_accesses(std::span<const TexelAccess> accesses) override {
-    tile->texels.insert(tile->texels.end(), accesses.begin(), accesses.end());
-  }
-  void framebuffer_accesses(std::span<const FramebufferAccess> accesses) override {
-    tile->framebuffer.insert(tile->framebuffer.end(), accesses.begin(), accesses.end());
-  }
   bool wants_framebuffer_events() const override { return framebuffer_events_; }
+  bool lends_storage() const override { return true; }
+  std::span<TexelAccess> texel_slots(std::size_t count) override { return texels_.lend(tile->texels, count); }
+  void commit_texels(std::size_t used) override { texels_.commit(tile->texels, used); }
+  std::span<FramebufferAccess> framebuffer_slots(std::size_t count) override {
+    return events_.lend(tile->framebuffer, count);
+  }
+  void commit_framebuffer(std::size_t used) override { events_.commit(tile->framebuffer, used); }
 
   TileEvents* tile = nullptr;
 
  private:
   bool framebuffer_events_;
+  VectorLender<TileBuffer<TexelAccess>> texels_;
+  VectorLender<TileBuffer<FramebufferAccess>> events_;
 };
 
 struct ParallelRasterizer::Worker {
@@ -141,6 +144,7 @@ ParallelRasterizer::ParallelRasterizer(Framebuffer& framebuffer, const RasterOpt
       options_(options),
       sink_(sink),
       recording_(sink != nullptr),
+      lending_(sink != nullptr && sink->lends_storage()),
       tile_columns_((framebuffer.width() + kScreenTile - 1) / kScreenTile),
       tile_rows_((framebuffer.height() + kScreenTile - 1) / kScreenTile),
       workspace_(acquire_workspace(std::max(1u, options.threads),
@@ -162,6 +166,7 @@ ParallelRasterizer::ParallelRasterizer(Framebuffer& framebuffer, const RasterOpt
     for (std::size_t i = next_tile_++; i < batch.busy_tiles.size(); i = next_tile_++)
       rasterize_tile(*workers_[w], batch, batch.busy_tiles[i]);
   };
+  copy_runs_ = [this](unsigned) { copy_runs(*merging_); };
 }
 
 ParallelRasterizer::~ParallelRasterizer() {
@@ -236,7 +241,7 @@ void ParallelRasterizer::complete_drawing() {
   pool_.wait();
   drawing_ = nullptr;  // only now: a worker that starts late still reads it
   if (own) std::rethrow_exception(own);
-  if (recording_) replay(batch);
+  if (recording_) hand_over(batch);
   clear(batch);
 }
 
@@ -320,30 +325,6 @@ void ParallelRasterizer::rasterize_in_tile(Worker& worker, const Binned& triangl
   }, hilbert_bits);
 }
 
-void ParallelRasterizer::replay(Batch& batch) {
-  for (const std::size_t t : batch.busy_tiles) cursors_[t] = TileCursor{};
-  for (const Step& step : batch.steps) {
-    switch (step.kind) {
-      case StepKind::BeginDraw:
-        sink_->begin_draw(batch.draws[step.first]);
-        break;
-      case StepKind::Fetches:
-        sink_->vertex_fetches(std::span<const VertexFetch>(batch.fetches.data() + step.first, step.last - step.first));
-        break;
-      case StepKind::Triangle:
-        emit_triangle(batch, step.first);
-        break;
-      case StepKind::Flush:
-        texels_out_.flush();
-        events_out_.flush();
-        break;
-      case StepKind::EndDraw:
-        sink_->end_draw();
-        break;
-    }
-  }
-}
-
 void ParallelRasterizer::emit_quad(const TileEvents& tile, TileCursor& cursor, const QuadMark& mark) {
   const std::span<const TexelAccess> texels(tile.texels.data() + cursor.texel, mark.texel_end - cursor.texel);
   const std::span<const FramebufferAccess> events(tile.framebuffer.data() + cursor.event,
@@ -362,7 +343,8 @@ void ParallelRasterizer::emit_quad(const TileEvents& tile, TileCursor& cursor, c
   }
 }
 
-void ParallelRasterizer::emit_triangle(Batch& batch, std::uint32_t triangle) {
+template <typename Quad>
+void ParallelRasterizer::merge_triangle(Batch& batch, std::uint32_t triangle, Quad&& quad) {
   int tx0, ty0, tx1, ty1;
   tile_range(batch.triangles[triangle].setup, tx0, ty0, tx1, ty1);
   // The tiles with quads of this triangle, and where its quads end in each.
@@ -393,7 +375,7 @@ void ParallelRasterizer::emit_triangle(Batch& batch, std::uint32_t triangle) {
   if (active == 1) {
     const TileEvents& tile = batch.tile_events[tiles[0]];
     TileCursor& cursor = cursors_[tiles[0]];
-    while (cursor.quad < ends[0]) emit_quad(tile, cursor, tile.quads[cursor.quad]);
+    while (cursor.quad < ends[0]) quad(tiles[0], tile, cursor, tile.quads[cursor.quad]);
     return;
   }
   // Several tiles: merge their quads by their place in the traversal order.
@@ -412,7 +394,108 @@ void ParallelRasterizer::emit_triangle(Batch& batch, std::uint32_t triangle) {
     if (best < 0) return;
     const TileEvents& tile = batch.tile_events[tiles[best]];
     TileCursor& cursor = cursors_[tiles[best]];
-    emit_quad(tile, cursor, tile.quads[cursor.quad]);
+    quad(tiles[best], tile, cursor, tile.quads[cursor.quad]);
+  }
+}
+
+void ParallelRasterizer::hand_over(Batch& batch) {
+  for (const std::size_t t : batch.busy_tiles) cursors_[t] = TileCursor{};
+  if (lending_)
+    merge_in_place(batch);
+  else
+    replay(batch);
+}
+
+template <typename Triangle, typename Flush>
+void ParallelRasterizer::walk_steps(Batch& batch, Triangle&& triangle, Flush&& flush) {
+  for (const Step& step : batch.steps) {
+    switch (step.kind) {
+      case StepKind::BeginDraw:
+        sink_->begin_draw(batch.draws[step.first]);
+        break;
+      case StepKind::Fetches:
+        sink_->vertex_fetches(std::span<const VertexFetch>(batch.fetches.data() + step.first, step.last - step.first));
+        break;
+      case StepKind::Triangle:
+        triangle(step.first);
+        break;
+      case StepKind::Flush:
+        flush();
+        break;
+      case StepKind::EndDraw:
+        sink_->end_draw();
+        break;
+    }
+  }
+}
+
+void ParallelRasterizer::replay(Batch& batch) {
+  const auto emit = [this](std::size_t, const TileEvents& tile, TileCursor& cursor, const QuadMark& mark) {
+    emit_quad(tile, cursor, mark);
+  };
+  walk_steps(
+      batch, [&](std::uint32_t triangle) { merge_triangle(batch, triangle, emit); },
+      [this] {
+        texels_out_.flush();
+        events_out_.flush();
+      });
+}
+
+// The lending sink keeps each kind's sequence only (sink.h): draws and fetches go to it as the
+// steps come, and the batch's texel and framebuffer events after them, all at once.
+void ParallelRasterizer::merge_in_place(Batch& batch) {
+  std::vector<Run>& runs = workspace_->runs;
+  runs.clear();
+  const auto plan = [this](std::size_t tile, const TileEvents&, TileCursor& cursor, const QuadMark& mark) {
+    plan_quad(tile, cursor, mark);
+  };
+  walk_steps(
+      batch, [&](std::uint32_t triangle) { merge_triangle(batch, triangle, plan); }, [] {});
+  if (runs.empty()) return;
+  const std::size_t texels = runs.back().texel_to + (runs.back().texel_end - runs.back().texel_begin);
+  const std::size_t events = runs.back().event_to + (runs.back().event_end - runs.back().event_begin);
+  texels_to_ = texels ? sink_->texel_slots(texels) : std::span<TexelAccess>();
+  events_to_ = events ? sink_->framebuffer_slots(events) : std::span<FramebufferAccess>();
+  merging_ = &batch;
+  next_run_ = 0;
+  pool_.run(copy_runs_);
+  if (texels) sink_->commit_texels(texels);
+  if (events) sink_->commit_framebuffer(events);
+}
+
+void ParallelRasterizer::plan_quad(std::size_t tile, TileCursor& cursor, const QuadMark& mark) {
+  // Runs stay short enough for the workers to share a batch that is one big run.
+  constexpr std::uint32_t kRunTexels = 1u << 15;
+  std::vector<Run>& runs = workspace_->runs;
+  Run* last = runs.empty() ? nullptr : &runs.back();
+  if (last && last->tile == tile && last->texel_end == cursor.texel && last->event_end == cursor.event &&
+      last->texel_end - last->texel_begin < kRunTexels) {
+    last->texel_end = mark.texel_end;
+    last->event_end = mark.events_end;
+  } else {
+    const std::size_t texel_to = last ? last->texel_to + (last->texel_end - last->texel_begin) : 0;
+    const std::size_t event_to = last ? last->event_to + (last->event_end - last->event_begin) : 0;
+    runs.push_back({static_cast<std::uint32_t>(tile), static_cast<std::uint32_t>(cursor.texel), mark.texel_end,
+                    static_cast<std::uint32_t>(cursor.event), mark.events_end, texel_to, event_to});
+  }
+  cursor.texel = mark.texel_end;
+  cursor.event = mark.events_end;
+  ++cursor.quad;
+}
+
+void ParallelRasterizer::copy_runs(const Batch& batch) {
+  constexpr std::size_t kClaim = 32;  // runs a worker claims at a time
+  const std::vector<Run>& runs = workspace_->runs;
+  for (std::size_t first = next_run_.fetch_add(kClaim); first < runs.size(); first = next_run_.fetch_add(kClaim)) {
+    const std::size_t last = std::min(first + kClaim, runs.size());
+    for (std::size_t r = first; r < last; ++r) {
+      const Run& run = runs[r];
+      const TileEvents& tile = batch.tile_events[run.tile];
+      std::copy(tile.texels.data() + run.texel_begin, tile.texels.data() + run.texel_end,
+                texels_to_.data() + run.texel_to);
+      std::copy(tile.framebuffer.data() + run.event_begin, tile.framebuffer.data() + run.event_end,
+                events_to_.data() + run.event_to);
+    }
   }
 }
 

@@ -2,16 +2,24 @@
 // event. Triangles are set up on the calling thread and binned to 32x32-pixel screen tiles; a
 // batch of them is rasterized tile by tile on a WorkerPool, each tile drawing its triangles in
 // draw order (the depth buffer, the colours and hierarchical Z are per pixel or per 8x8 tile, so
-// tiles are independent). Each tile keeps its events in its own buffers with a mark per quad; the
-// calling thread then replays the frame in the serial order: the caller's own events (draws,
+// tiles are independent). Each tile keeps its events in its own buffers with a mark per quad.
+// The batch's events then reach the sink in the serial order: the caller's own events (draws,
 // vertex fetches) where they were sent, and each triangle's quads merged across its tiles by their
-// key in the traversal order (raster/traversal.h), through recorders that batch exactly as the
-// serial rasterizer's do. The sink therefore receives the same calls, with the same batches, at
-// any thread count, and a trace file's bytes do not change.
+// key in the traversal order (raster/traversal.h).
+//
+// How depends on the sink. A sink that lends storage (traces/sink.h: a MemorySink) keeps only
+// each kind's sequence of events, so the calling thread only plans the merge (a list of runs of
+// consecutive quads of one tile, with their places in the output, no event copied), borrows one
+// span per kind for the whole batch, and the pool copies the runs into it in parallel. Any
+// other sink sees batches and the interleaving of kinds (a trace file's chunks), so the calling
+// thread replays the frame through recorders that batch exactly as the serial rasterizer's do:
+// the sink receives the same calls, with the same batches, at any thread count, and a trace
+// file's bytes do not change.
 //
 // Batches are double-buffered: while the workers draw one, the calling thread sets up and bins
-// the next; when that one is full it joins the workers on what is left of the first, replays it,
-// and hands over the second. Tiles of one batch are drawn only after every tile of the one before.
+// the next; when that one is full it joins the workers on what is left of the first, hands its
+// events over, and hands over the second. Tiles of one batch are drawn only after every tile of
+// the one before.
 //
 // The threads and the batches' buffers (a workspace) outlive the rasterizer: a finished frame
 // returns its workspace to a process-wide cache, and the next frame with the same thread count
@@ -24,8 +32,10 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 #include <vector>
 
+#include "core/huge_page_allocator.h"
 #include "raster/framebuffer.h"
 #include "raster/framebuffer_recorder.h"
 #include "raster/quad_stage.h"
@@ -65,15 +75,23 @@ class ParallelRasterizer {
     std::uint32_t texel_end;   // end of its texel events in the tile's buffer
     std::uint32_t events_end;  // end of its framebuffer events
   };
+  template <typename Event>
+  using TileBuffer = std::vector<Event, UnsetHugePageAllocator<Event>>;  // lent to the worker's recorders
   struct TileEvents {
-    std::vector<TexelAccess> texels;
-    std::vector<FramebufferAccess> framebuffer;
+    TileBuffer<TexelAccess> texels;
+    TileBuffer<FramebufferAccess> framebuffer;
     std::vector<QuadMark> quads;
     std::vector<std::uint32_t> triangle_ends;  // per binned triangle: its end in quads
   };
   // The replay's place in each tile.
   struct TileCursor {
     std::size_t triangle = 0, quad = 0, texel = 0, event = 0;
+  };
+  // A run of one tile's events that stays contiguous in the merged order (lending sinks).
+  struct Run {
+    std::uint32_t tile;
+    std::uint32_t texel_begin, texel_end, event_begin, event_end;  // in the tile's buffers
+    std::size_t texel_to, event_to;                                 // in the batch's merged events
   };
   enum class StepKind : std::uint8_t { BeginDraw, Fetches, Triangle, Flush, EndDraw };
   struct Step {
@@ -99,15 +117,27 @@ class ParallelRasterizer {
   template <bool kTextured, bool kDebug>
   void rasterize_in_tile(Worker& worker, const Binned& triangle, const PixelRect& clip, TileEvents& out,
                          std::uint64_t texel_base, std::uint64_t event_base);
+  // Hands the drawn batch's events to the sink: merge_in_place() for a lending sink, else a replay.
+  void hand_over(Batch& batch);
   void replay(Batch& batch);
-  void emit_triangle(Batch& batch, std::uint32_t triangle);
+  void merge_in_place(Batch& batch);
+  // Sends the batch's draws and fetches to the sink in order; calls triangle(index) and flush()
+  // where those steps are.
+  template <typename Triangle, typename Flush>
+  void walk_steps(Batch& batch, Triangle&& triangle, Flush&& flush);
+  // Calls quad(tile, cursor, mark) for each quad of the triangle in the serial order.
+  template <typename Quad>
+  void merge_triangle(Batch& batch, std::uint32_t triangle, Quad&& quad);
   void emit_quad(const TileEvents& tile, TileCursor& cursor, const QuadMark& mark);
+  void plan_quad(std::size_t tile, TileCursor& cursor, const QuadMark& mark);
+  void copy_runs(const Batch& batch);
   void clear(Batch& batch);
 
   Framebuffer& framebuffer_;
   RasterOptions options_;
   EventSink* sink_;
   bool recording_;  // a sink is attached: tiles keep their events for the replay
+  bool lending_;    // and it lends storage: tiles' events are copied into it in parallel
   std::unique_ptr<OrderedSink> ordered_;
   std::unique_ptr<HierarchicalZ> hiz_;
   std::vector<std::unique_ptr<Worker>> workers_;
@@ -132,6 +162,7 @@ class ParallelRasterizer {
     WorkerPool pool;
     Batch batches[2];
     std::vector<TileCursor> cursors;  // the replay's, per tile
+    std::vector<Run> runs;            // merge_in_place()'s plan
   };
   std::unique_ptr<Workspace> workspace_;
   WorkerPool& pool_;
@@ -141,6 +172,12 @@ class ParallelRasterizer {
   Batch* drawing_ = nullptr;       // being drawn by the workers, if any
   std::atomic<std::size_t> next_tile_{0};
   std::function<void(unsigned)> draw_tiles_;  // the workers' job: tiles of *drawing_
+  // merge_in_place()'s: the runs claimed so far, the spans the sink lent, the workers' job.
+  std::atomic<std::size_t> next_run_{0};
+  std::span<TexelAccess> texels_to_;
+  std::span<FramebufferAccess> events_to_;
+  const Batch* merging_ = nullptr;
+  std::function<void(unsigned)> copy_runs_;
 
   // The replay's recorders: batch the merged events as the serial rasterizer's recorders do.
   TexelRecorder texels_out_;
