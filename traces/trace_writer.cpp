@@ -1,10 +1,12 @@
 #include "traces/trace_writer.h"
 
+#include <algorithm>
 #include <atomic>
 #include <condition_variable>
 #include <cstring>
 #include <deque>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -29,33 +31,55 @@ void put(std::string& out, T value) {
 }
 }  // namespace
 
-// A full chunk on its way to the file: its records of one kind (the other vectors are empty).
+// A full chunk on its way to the file: its records of one kind (the other vectors are empty),
+// then its bytes as they go into the file.
 struct TraceWriter::Chunk {
   RecordKind kind = RecordKind::Vertex;
   std::uint8_t flags = 0;
   std::uint32_t records = 0;
   std::uint64_t first_record = 0;
   std::uint16_t frame = 0;
+  std::uint64_t sequence = 0;  // submission order, which is the file's order
   DrawInfo draw;
   std::vector<VertexFetch> vertices;
   std::vector<TexelAccess> texels;
   std::vector<AddressAccess> addresses;
   std::vector<FramebufferAccess> framebuffer;
+  std::string header, compressed;
+  std::size_t stored = 0;  // bytes of compressed that are the chunk's payload
 };
 
-struct TraceWriter::State {
-  State(const std::string& file_path, int level) : file(file_path), path(file_path), zstd_level(level) {}
-  ~State() {
-    stop();
-    ZSTD_freeCCtx(cctx);
+namespace {
+// A compression thread's own: zstd context and encoding buffer, kept from chunk to chunk.
+struct Compressor {
+  Compressor() : cctx(ZSTD_createCCtx()) {
+    if (!cctx) throw std::bad_alloc();
   }
+  ~Compressor() { ZSTD_freeCCtx(cctx); }
+  Compressor(const Compressor&) = delete;
+  Compressor& operator=(const Compressor&) = delete;
+  ZSTD_CCtx* cctx;
+  std::string raw;
+};
+}  // namespace
+
+// Chunks flow: submit() queues them; compression threads take them in order, encode and compress
+// each independently (a chunk's bytes do not depend on the thread or on the chunks around it);
+// the ordered stage writes them by sequence. The ordered stage is whichever compression thread
+// finds the next chunk due and nobody writing: it writes every consecutive finished chunk, so
+// the file is written by one thread at a time, in submission order.
+struct TraceWriter::State {
+  State(const std::string& file_path, int level, unsigned compression_threads)
+      : file(file_path), path(file_path), zstd_level(level), threads(compression_threads),
+        limit(TraceWriter::chunks_in_flight(compression_threads)), done(limit) {}
+  ~State() { stop(); }
   void write(const void* data, std::size_t size) {
     file.stream().write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
     if (!file.stream()) throw_in_file(path, "write failed (disk full?)");
     offset += size;
   }
-  // Encodes, compresses and writes one chunk; runs on the background thread.
-  void write_chunk(const Chunk& chunk) {
+  void compress(Chunk& chunk, Compressor& compressor) const {
+    std::string& raw = compressor.raw;
     switch (chunk.kind) {
       case RecordKind::Vertex:
         encode_vertex_records(chunk.draw, chunk.vertices, raw);
@@ -71,10 +95,13 @@ struct TraceWriter::State {
         break;
     }
     const std::size_t bound = ZSTD_compressBound(raw.size());
-    compressed.resize(bound);
-    const std::size_t stored = ZSTD_compressCCtx(cctx, compressed.data(), bound, raw.data(), raw.size(), zstd_level);
+    chunk.compressed.resize(bound);
+    const std::size_t stored =
+        ZSTD_compressCCtx(compressor.cctx, chunk.compressed.data(), bound, raw.data(), raw.size(), zstd_level);
     if (ZSTD_isError(stored)) throw std::runtime_error(std::string("zstd: ") + ZSTD_getErrorName(stored));
-    std::string header;
+    chunk.stored = stored;
+    std::string& header = chunk.header;
+    header.clear();
     put<std::uint32_t>(header, kChunkTag);
     put<std::uint8_t>(header, static_cast<std::uint8_t>(chunk.kind));
     put<std::uint8_t>(header, chunk.flags);
@@ -83,13 +110,17 @@ struct TraceWriter::State {
     put<std::uint32_t>(header, static_cast<std::uint32_t>(stored));
     put<std::uint32_t>(header, static_cast<std::uint32_t>(raw.size()));
     put<std::uint64_t>(header, chunk.first_record);
-    const std::uint32_t crc = crc32c(compressed.data(), stored, crc32c(header.data(), header.size()));
+    const std::uint32_t crc = crc32c(chunk.compressed.data(), stored, crc32c(header.data(), header.size()));
     put<std::uint32_t>(header, crc);
+  }
+  // The ordered stage's work on one chunk.
+  void write_chunk(const Chunk& chunk) {
     index.push_back({offset.load(), chunk.first_record, chunk.records, chunk.kind, chunk.frame});
-    write(header.data(), header.size());
-    write(compressed.data(), stored);
+    write(chunk.header.data(), chunk.header.size());
+    write(chunk.compressed.data(), chunk.stored);
   }
   void run() {
+    std::unique_ptr<Compressor> compressor;
     for (;;) {
       Chunk chunk;
       {
@@ -99,10 +130,39 @@ struct TraceWriter::State {
         chunk = std::move(queue.front());
         queue.pop_front();
       }
-      space.notify_one();
       std::exception_ptr failure;
       try {
-        if (!error) write_chunk(chunk);
+        if (!failed()) {
+          if (!compressor) compressor = std::make_unique<Compressor>();
+          compress(chunk, *compressor);
+        }
+      } catch (...) {
+        failure = std::current_exception();
+      }
+      {
+        const std::lock_guard lock(mutex);
+        if (failure && !error) error = failure;
+        done[chunk.sequence % limit] = std::move(chunk);
+      }
+      write_due();
+    }
+  }
+  // The ordered stage: writes the finished chunks that are due, unless another thread is at it
+  // (it finds this thread's chunk before it stops: both look under the lock).
+  void write_due() {
+    std::unique_lock lock(mutex);
+    if (writing) return;
+    writing = true;
+    for (;;) {
+      std::optional<Chunk>& slot = done[next_write % limit];
+      if (!slot || slot->sequence != next_write) break;
+      Chunk chunk = std::move(*slot);
+      slot.reset();
+      const bool skip = error != nullptr;
+      lock.unlock();
+      std::exception_ptr failure;
+      try {
+        if (!skip) write_chunk(chunk);
       } catch (...) {
         failure = std::current_exception();
       }
@@ -110,45 +170,60 @@ struct TraceWriter::State {
       chunk.texels.clear();
       chunk.addresses.clear();
       chunk.framebuffer.clear();
-      {
-        const std::lock_guard lock(mutex);
-        if (failure && !error) error = failure;
-        spare.push_back(std::move(chunk));
-      }
-      space.notify_one();
+      lock.lock();
+      if (failure && !error) error = failure;
+      spare.push_back(std::move(chunk));
+      ++next_write;
+      --in_flight;
+      space.notify_all();
     }
+    writing = false;
   }
-  // Writes what is queued and ends the thread (the queue is emptied first).
+  bool failed() {
+    const std::lock_guard lock(mutex);
+    return error != nullptr;
+  }
+  // Compresses and writes what is queued, and ends the threads (the queue is emptied first).
   void stop() {
     {
       const std::lock_guard lock(mutex);
       stopping = true;
     }
     ready.notify_all();
-    if (thread.joinable()) thread.join();
+    for (std::thread& thread : pool)
+      if (thread.joinable()) thread.join();
   }
 
   AtomicFile file;
-  ZSTD_CCtx* cctx = ZSTD_createCCtx();
   std::string path;
   int zstd_level;
+  unsigned threads;
+  std::size_t limit;  // chunks submitted and not yet written, at most
   std::atomic<std::uint64_t> offset{0};
-  std::vector<ChunkInfo> index;  // the background thread's until it has stopped
-  std::string raw, compressed;
+  std::vector<ChunkInfo> index;  // the ordered stage's until the threads have stopped
   std::mutex mutex;
   std::condition_variable ready, space;
-  std::deque<Chunk> queue;
+  std::deque<Chunk> queue;                // waiting for a compression thread
+  std::vector<std::optional<Chunk>> done;  // compressed, waiting for their turn: by sequence % limit
+  std::uint64_t next_sequence = 0, next_write = 0;
+  std::size_t in_flight = 0;
+  bool writing = false;
   std::vector<Chunk> spare;  // written chunks, their vectors' capacity kept for reuse
   bool stopping = false;
   std::exception_ptr error;
-  std::thread thread;
+  std::vector<std::thread> pool;
 };
 
 TraceWriter::TraceWriter(const std::string& path, TraceMetadata metadata, TraceWriterOptions options)
     : options_(options) {
   if (options_.chunk_records == 0 || options_.chunk_records > kMaxChunkRecords)
     throw InputError("trace chunk size " + std::to_string(options_.chunk_records) + ": expected 1..1048576 records");
-  state_ = std::make_unique<State>(path, options_.zstd_level);
+  // Beyond a few threads the renderer, filling chunks on one thread, is the bound.
+  constexpr unsigned kMostAutomaticThreads = 8;
+  const unsigned threads = options_.compression_threads
+                               ? options_.compression_threads
+                               : std::clamp(std::thread::hardware_concurrency(), 1u, kMostAutomaticThreads);
+  state_ = std::make_unique<State>(path, options_.zstd_level, threads);
   if (!state_->file.stream()) throw_in_file(path, "cannot open for writing");
   if (metadata.tool_version.empty()) metadata.tool_version = RASTRACE_VERSION;
   const std::string json = metadata_to_json(metadata);
@@ -159,7 +234,7 @@ TraceWriter::TraceWriter(const std::string& path, TraceMetadata metadata, TraceW
   put<std::uint32_t>(header, crc32c(json.data(), json.size()));
   state_->write(header.data(), header.size());
   vertices_.reserve(options_.chunk_records);
-  state_->thread = std::thread([state = state_.get()] { state->run(); });
+  for (unsigned t = 0; t < threads; ++t) state_->pool.emplace_back([state = state_.get()] { state->run(); });
 }
 
 TraceWriter::~TraceWriter() = default;
@@ -185,8 +260,10 @@ void TraceWriter::submit(Chunk& chunk, RecordKind kind, std::uint8_t flags, std:
   State& state = *state_;
   {
     std::unique_lock lock(state.mutex);
-    state.space.wait(lock, [&] { return state.error || state.queue.size() < kChunksInFlight; });
+    state.space.wait(lock, [&] { return state.error || state.in_flight < state.limit; });
     if (state.error) std::rethrow_exception(state.error);
+    chunk.sequence = state.next_sequence++;
+    ++state.in_flight;
     state.queue.push_back(std::move(chunk));
   }
   state.ready.notify_one();

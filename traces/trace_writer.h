@@ -1,11 +1,14 @@
 // TraceWriter: an EventSink that writes the trace container (trace_format.h). Give it to the
 // renderer instead of (or beside) a live cache bank; `rastrace replay` reads the file back.
-// Memory is bounded (one chunk per record kind, up to kChunksInFlight full chunks waiting for the
-// background thread, plus 24 bytes of index per chunk), so frames of any length stream to disk.
-// Chunks are encoded, compressed and written by a thread of the writer's own, in the order they
-// were filled, so compression overlaps rendering and the file's bytes are those a writer without
-// the thread would write. The file appears only when finish() succeeds (core/atomic_file.h);
-// a writer destroyed without finish() leaves nothing behind.
+// Chunks are encoded and compressed by a few threads of the writer's own, each chunk on its own
+// (its bytes depend on its records only), and written by one ordered stage in the order they were
+// filled: compression overlaps rendering and spreads over the cores, and the file's bytes are
+// those a writer with one thread, or none, would write. Memory is bounded: one open chunk per
+// record kind, at most chunks_in_flight(threads) = 2 x threads + 2 full chunks between filled and
+// written (submitting waits for room), plus 24 bytes of index per chunk, so frames of any length
+// stream to disk. The file appears only when finish() succeeds (core/atomic_file.h); a writer
+// destroyed without finish() leaves nothing behind. The first error (a failed write, disk full)
+// is thrown from the next submission of a chunk or from finish().
 //
 //   TraceMetadata meta{.scene = "builtin:bunny", .ordering = "tipsy", .width = 512, .height = 512,
 //                      .filter = "trilinear", .textures = {mip_chain_sizes(256, 256)}};
@@ -32,6 +35,7 @@ namespace rastrace {
 struct TraceWriterOptions {
   int zstd_level = 3;
   std::uint32_t chunk_records = kChunkRecords;  // records per chunk (tests use small chunks)
+  unsigned compression_threads = 0;             // 0: one per core, up to 8
 };
 
 class TraceWriter : public EventSink {
@@ -57,9 +61,11 @@ class TraceWriter : public EventSink {
   std::uint64_t records(RecordKind kind) const { return counts_[static_cast<int>(kind)]; }
   // Bytes written so far (the file size once finished).
   std::uint64_t bytes_written() const;
+  // Full chunks that may be between filled and written before submitting one waits.
+  static constexpr std::size_t chunks_in_flight(unsigned compression_threads) {
+    return 2 * std::size_t{compression_threads} + 2;
+  }
 
-  // Full chunks that may wait for the background thread before a flush waits for it.
-  static constexpr std::size_t kChunksInFlight = 4;
 
  private:
   struct Chunk;
@@ -67,7 +73,7 @@ class TraceWriter : public EventSink {
   void flush_texels();
   void flush_addresses();
   void flush_framebuffer();
-  // Hands a chunk to the background thread (waiting while kChunksInFlight are queued).
+  // Hands a chunk to the compression threads (waiting while the most chunks allowed are in flight).
   void submit(Chunk& chunk, RecordKind kind, std::uint8_t flags, std::uint32_t records);
   Chunk take_spare();
 
