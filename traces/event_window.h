@@ -71,6 +71,10 @@ class EventWindow {
   Event* reserve(std::size_t count) {
     Event* out = out_ + size_;
     size_ += count;
+    // A lent span is memory the sink last wrote a frame ago, out of the caches: asking for its
+    // lines a little ahead of the stores keeps the hot loop from waiting on each line's miss.
+    // (Prefetching past the span's end is harmless: prefetches do not fault.)
+    __builtin_prefetch(reinterpret_cast<const char*>(out) + kPrefetchBytes, 1);
     return out;
   }
   void stored() {
@@ -101,6 +105,7 @@ class EventWindow {
   }
 
  private:
+  static constexpr std::size_t kPrefetchBytes = 1024;
   static constexpr std::type_identity<Event> kind() { return {}; }
   bool lent() const { return out_ != buffer_.data(); }
   void idle() {
