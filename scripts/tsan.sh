@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # ThreadSanitizer over the code that runs threads: the trace reader's read-ahead thread
-# (traces/trace_reader.cpp; the ReadAhead tests), the trace writer's compression thread
-# (traces/trace_writer.cpp), the parallel sweep's workers, each of which replays with its own
+# (traces/trace_reader.cpp; the ReadAhead tests), the trace writer's compression threads and
+# ordered stage (traces/trace_writer.cpp; TraceWriterThreads), the parallel sweep's workers, each of which replays with its own
 # read-ahead (cache_sim/sweep.cpp; ParallelSweep), and the multi-threaded renderer's tile workers
 # (raster/worker_pool.cpp; the RenderIdentity tests at 2 and 4 threads, which also write traces
 # through the writer's thread, and RasterWorkspaceReuse, whose frames reuse the cached workers and
-# buffers after an interrupted frame). Own build in build-tsan/.
+# buffers after an interrupted frame; InPlaceTrace, whose workers copy tiles' events into a
+# MemorySink's lent storage). Own build in build-tsan/.
 # Only the three test executables and the libraries they link are built: their `/fast` make
 # targets skip the dependency on the rastrace tool, which these tests do not run. `/fast` also
 # skips the step that merges the compiler's header dependencies, so that step (`depend`) runs
@@ -39,7 +40,8 @@ echo "tsan: built in $(($(date +%s) - start)) s" >&2
 # halt_on_error: the first report fails the run; second_deadlock_stack: both stacks of an inversion.
 export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 ${TSAN_OPTIONS:-}"
 export RASTRACE_READ_AHEAD=1
-"$dir/tests/test_traces" --gtest_filter='ReadAhead.*:TraceFile*' --gtest_brief=1
+"$dir/tests/test_traces" --gtest_filter='ReadAhead.*:TraceFile*:TraceWriterThreads.TheFile*:TraceWriterThreads.WhatFour*' \
+  --gtest_brief=1
 "$dir/tests/test_cache_sim" --gtest_filter='ParallelSweep.*:SweepRowSink.*:LiveBank*' --gtest_brief=1
-"$dir/tests/test_pipeline" --gtest_filter='RenderIdentity.TwoThreads*:RenderIdentity.FourThreads*:RasterWorkspaceReuse*' --gtest_brief=1
+"$dir/tests/test_pipeline" --gtest_filter='RenderIdentity.TwoThreads*:RenderIdentity.FourThreads*:RasterWorkspaceReuse*:InPlaceTrace.*' --gtest_brief=1
 echo "tsan: no report, total $(($(date +%s) - start)) s" >&2
