@@ -66,7 +66,6 @@ class TraceWriter : public EventSink {
     return 2 * std::size_t{compression_threads} + 2;
   }
 
-
  private:
   struct Chunk;
   void flush_vertices(bool ends_draw);
