@@ -5,7 +5,6 @@
 #pragma once
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -101,7 +100,7 @@ inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, 
   if (!mask) return;
   ++stats.quads;
 
-  const unsigned covered = static_cast<unsigned>(std::popcount(mask));
+  const unsigned covered = simd::lanes_set(mask);
   stats.fragments += covered;
 
   // Barycentric weights of vertices 1 and 2 at the four centres (helper pixels included).
@@ -138,25 +137,25 @@ inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, 
   const bool late = options.depth_test == DepthTest::Late;
   unsigned pass = late ? 0u : depth_test();
   if (!late) {
-    stats.fragments_rejected_early += covered - static_cast<unsigned>(std::popcount(pass));
+    stats.fragments_rejected_early += covered - simd::lanes_set(pass);
     if (!pass) return;
   }
   const unsigned shade = late ? mask : pass;
-  stats.fragments_shaded += static_cast<unsigned>(std::popcount(shade));
+  stats.fragments_shaded += simd::lanes_set(shade);
   // Perspective correction: every attribute but q and z is interpolated divided by w.
   const f32x4 w = splat(1.0f) / attribute(0);
-  const f32x4 red = attribute(3) * w, green = attribute(4) * w, blue = attribute(5) * w, alpha = attribute(6) * w;
-  f32x4 shaded[4];  // per pixel, channels in lanes
-  for (int i = 0; i < 4; ++i) shaded[i] = f32x4{red[i], green[i], blue[i], alpha[i]};
+  // Channels in vectors, pixels in lanes, as the sampler returns them.
+  f32x4 shaded[4] = {attribute(3) * w, attribute(4) * w, attribute(5) * w, attribute(6) * w};
   if constexpr (kTextured) {
     const f32x4 u = attribute(1) * w, v = attribute(2) * w;
     const Texture* texture = state.texture;
-    stats.fragments_textured += static_cast<unsigned>(std::popcount(shade));
+    stats.fragments_textured += simd::lanes_set(shade);
     const float dsdx = u[1] - u[0], dtdx = v[1] - v[0], dsdy = u[2] - u[0], dtdy = v[2] - v[0];
     TexelSite site;
     site.texture = state.texture_id;
     site.triangle = state.triangle;
-    f32x4 texel_colour[4];
+    // Lanes of pixels the sampler skips keep 1: their products are never written.
+    f32x4 texel_colour[4] = {splat(1.0f), splat(1.0f), splat(1.0f), splat(1.0f)};
     if (options.sampler.max_anisotropy > 1 && options.sampler.aniso_rule == AnisotropyRule::Probes) {
       const ProbeFootprint footprint = probe_footprint(*texture, options.sampler, dsdx, dtdx, dsdy, dtdy);
       sample_quad_probes(*texture, options.sampler, footprint, u, v, shade, qx, qy, texels, site, texel_colour);
@@ -168,8 +167,7 @@ inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, 
           compute_lod(options.sampler, texture->levels[0].width, texture->levels[0].height, dsdx, dtdx, dsdy, dtdy);
       sample_quad(*texture, options.sampler, u, v, lambda, shade, qx, qy, texels, site, texel_colour);
     }
-    for (int i = 0; i < 4; ++i)
-      if (shade >> i & 1u) shaded[i] *= texel_colour[i];
+    for (int c = 0; c < 4; ++c) shaded[c] *= texel_colour[c];
   }
   if (late) pass = depth_test();
   if (!pass) return;
@@ -177,15 +175,17 @@ inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, 
   framebuffer_events.record(FramebufferOp::ColourWrite, qx, qy, pass, state.triangle);
   bool tile_maximum_written = false;
   std::uint8_t* colour = framebuffer.colour();
-  stats.fragments_passed += static_cast<unsigned>(std::popcount(pass));
+  stats.fragments_passed += simd::lanes_set(pass);
+  simd::i32x4 bytes[4];
+  for (int c = 0; c < 4; ++c)
+    bytes[c] = simd::truncate(simd::clamp(shaded[c], 0.0f, 1.0f) * splat(255.0f) + splat(0.5f));
   for (int i = 0; i < 4; ++i) {
     if (!(pass >> i & 1u)) continue;
     const std::size_t p = pixel(i);
     if (hiz && depth[p] >= hiz->farthest(tile)) tile_maximum_written = true;
     depth[p] = z[i];
-    const simd::i32x4 bytes = simd::truncate(simd::clamp(shaded[i], 0.0f, 1.0f) * splat(255.0f) + splat(0.5f));
     std::uint8_t* out = colour + p * 4;
-    for (int ch = 0; ch < 4; ++ch) out[ch] = static_cast<std::uint8_t>(bytes[ch]);
+    for (int c = 0; c < 4; ++c) out[c] = static_cast<std::uint8_t>(bytes[c][i]);
     if constexpr (kDebug) ++framebuffer.write_count()[p];
   }
   if (tile_maximum_written) hiz->refresh(framebuffer, tile);
