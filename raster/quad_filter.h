@@ -1,6 +1,6 @@
 // The bilinear and trilinear filter of a 2x2 quad in eight lanes: lanes 0-3 are the quad's four
 // pixels in the first level read, lanes 4-7 the same pixels in the second level of a
-// LINEAR_MIPMAP_LINEAR blend. Texels are loaded as 32-bit words and split into channels in
+// LINEAR_MIPMAP_LINEAR blend (four lanes for one level, or for a blend of two pixels). Texels are loaded as 32-bit words and split into channels in
 // integer lanes, so every channel of every pixel and level is filtered by the same vector
 // operation (llvmpipe's layout: pixels in lanes, one register per channel).
 //
@@ -35,13 +35,18 @@ struct QuadFilterInput {
   bool repeat_t = true;
   bool blend = false;         // LINEAR_MIPMAP_LINEAR between levels[0] and levels[1]
   float fraction = 0.0f;      // the blend's weight of levels[1]
+  // A blend of at most two pixels, in lanes 0 and 1 of s and t: it runs in four lanes (two
+  // pixels, two levels) instead of eight. The small triangles of a dense mesh shade one or two
+  // pixels of most of their quads.
+  bool two_pixels = false;
   QuadFilterF32x4 s, t;       // per pixel, already finite and within +-kCoordinateLimit
 };
 
 struct QuadFilterOutput {
-  // Each lane's 2x2 footprint (x0..x1, y0..y1), wrapped: what the recorder reports.
+  // Each lane's 2x2 footprint (x0..x1, y0..y1), wrapped: what the recorder reports. Pixel i's
+  // lane in the first level is i, in the second i + 4 (i + 2 with two_pixels).
   QuadFilterI32x8 x0, x1, y0, y1;
-  QuadFilterF32x4 rgba[4];  // red, green, blue, alpha; a lane per pixel
+  QuadFilterF32x4 rgba[4];  // red, green, blue, alpha; a lane per pixel (lanes 0 and 1 with two_pixels)
 };
 
 // Vectors cross this interface by reference only: a 32-byte vector passed by value has different

@@ -1,5 +1,7 @@
 #include "raster/quad_sampler.h"
 
+#include <algorithm>
+
 #include "raster/quad_filter.h"
 
 namespace rastrace {
@@ -56,19 +58,42 @@ void sample_quad(const Texture& texture, const SamplerState& state, f32x4 s, f32
     in.repeat_t = state.wrap_t == TextureWrap::Repeat;
     in.blend = plan.blend;
     in.fraction = plan.fraction;
-    in.s = s;
-    in.t = t;
+    // The sampled pixels in order; a blend of one or two of them is filtered in their lanes alone.
+    int sampled[4], count = 0;
+    for (int i = 0; i < 4; ++i)
+      if (pixels >> i & 1u) sampled[count++] = i;
+    if (count == 0) return;
+    in.two_pixels = plan.blend && count <= 2;
+    if (in.two_pixels) {
+      for (int j = 0; j < 2; ++j) {
+        const int i = sampled[std::min(j, count - 1)];
+        in.s[j] = s[i];
+        in.t[j] = t[i];
+      }
+    } else {
+      in.s = s;
+      in.t = t;
+    }
     QuadFilterOutput out;
     renderer_quad_filter()(in, out);
-    for (int i = 0; i < 4; ++i) {
-      if (!(pixels >> i & 1u)) continue;
+    const int second_level_lane = in.two_pixels ? 2 : 4;
+    for (int j = 0; j < count; ++j) {
+      const int i = sampled[j], lane = in.two_pixels ? j : i;
       site.pixel_x = static_cast<std::uint16_t>(qx + (i & 1));
       site.pixel_y = static_cast<std::uint16_t>(qy + (i >> 1));
-      recorder.record_footprint(site, plan.first, out.x0[i], out.x1[i], out.y0[i], out.y1[i]);
-      if (plan.blend)
-        recorder.record_footprint(site, plan.first + 1, out.x0[i + 4], out.x1[i + 4], out.y0[i + 4], out.y1[i + 4]);
+      recorder.record_footprint(site, plan.first, out.x0[lane], out.x1[lane], out.y0[lane], out.y1[lane]);
+      if (plan.blend) {
+        const int second = lane + second_level_lane;
+        recorder.record_footprint(site, plan.first + 1, out.x0[second], out.x1[second], out.y0[second],
+                                  out.y1[second]);
+      }
     }
-    for (int c = 0; c < 4; ++c) rgba[c] = out.rgba[c];
+    if (in.two_pixels) {
+      for (int j = 0; j < count; ++j)
+        for (int c = 0; c < 4; ++c) rgba[c][sampled[j]] = out.rgba[c][j];
+    } else {
+      for (int c = 0; c < 4; ++c) rgba[c] = out.rgba[c];
+    }
     return;
   }
   // NEAREST within one level (NEAREST, NEAREST_MIPMAP_NEAREST, or a NEAREST magnification).

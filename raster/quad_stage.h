@@ -5,6 +5,8 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
+#include <cstring>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -125,10 +127,19 @@ inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, 
       return;
     }
   }
+  // A quad wholly inside the image reads and writes its pixels as two rows of two lanes; one on
+  // the right or bottom border (odd sizes) pixel by pixel.
+  const bool whole = qx + 1 < width && qy + 1 < height;
+  float* const depth_rows[2] = {depth + pixel(0), depth + pixel(2)};
   auto depth_test = [&] {
     unsigned pass = 0;
-    for (int i = 0; i < 4; ++i)
-      if ((mask >> i & 1u) && z[i] < depth[pixel(i)]) pass |= 1u << i;
+    if (whole) {
+      const f32x4 stored{depth_rows[0][0], depth_rows[0][1], depth_rows[1][0], depth_rows[1][1]};
+      pass = mask & simd::lanes_true(z < stored);
+    } else {
+      for (int i = 0; i < 4; ++i)
+        if ((mask >> i & 1u) && z[i] < depth[pixel(i)]) pass |= 1u << i;
+    }
     framebuffer_events.record(FramebufferOp::DepthRead, qx, qy, mask, state.triangle);
     return pass;
   };
@@ -179,6 +190,31 @@ inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, 
   simd::i32x4 bytes[4];
   for (int c = 0; c < 4; ++c)
     bytes[c] = simd::truncate(simd::clamp(shaded[c], 0.0f, 1.0f) * splat(255.0f) + splat(0.5f));
+  if (whole && !kDebug && std::endian::native == std::endian::little) {
+    // The passing lanes' depths and RGBA words over the stored ones, two pixels per row.
+    const simd::i32x4 write = simd::lanes_of(pass);
+    const f32x4 stored{depth_rows[0][0], depth_rows[0][1], depth_rows[1][0], depth_rows[1][1]};
+    if (hiz && (pass & simd::lanes_true(stored >= splat(hiz->farthest(tile))))) tile_maximum_written = true;
+    const f32x4 depths = write ? z : stored;
+    const simd::i32x4 mask8 = splat(0xFF);
+    const simd::i32x4 words =
+        (bytes[0] & mask8) | (bytes[1] & mask8) << 8 | (bytes[2] & mask8) << 16 | (bytes[3] & mask8) << 24;
+    std::uint8_t* const colour_rows[2] = {colour + pixel(0) * 4, colour + pixel(2) * 4};
+    simd::i32x4 stored_words;
+    for (int row = 0; row < 2; ++row) {
+      std::memcpy(&stored_words[2 * row], colour_rows[row], 4);
+      std::memcpy(&stored_words[2 * row + 1], colour_rows[row] + 4, 4);
+    }
+    const simd::i32x4 out = write ? words : stored_words;
+    for (int row = 0; row < 2; ++row) {
+      depth_rows[row][0] = depths[2 * row];
+      depth_rows[row][1] = depths[2 * row + 1];
+      std::memcpy(colour_rows[row], &out[2 * row], 4);
+      std::memcpy(colour_rows[row] + 4, &out[2 * row + 1], 4);
+    }
+    if (tile_maximum_written) hiz->refresh(framebuffer, tile);
+    return;
+  }
   for (int i = 0; i < 4; ++i) {
     if (!(pass >> i & 1u)) continue;
     const std::size_t p = pixel(i);

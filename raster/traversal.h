@@ -36,6 +36,8 @@ struct PixelRect {
 };
 
 inline constexpr int kTraversalTile = 8;  // the 8x8 tiles of Tiled8 and Hilbert8 (and of hierarchical Z)
+// Rows of more quads than this are cut to the quads their edges may let a pixel into.
+inline constexpr int kSpanMinimumColumns = 4;
 
 // How far the bounding box's corner is aligned down (setup_triangle's `align`).
 inline int traversal_alignment(Traversal traversal) {
@@ -98,7 +100,9 @@ void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect&
       // the quad stage would leave them at once; skipping them visits the same quads with
       // coverage in the same order (llvmpipe and hardware skip them in blocks the same way).
       std::int64_t begin = 0, end = columns;
-      if constexpr (!kVisitAll) {
+      // Rows of a few quads (the small triangles of a dense mesh) are visited whole: three 64-bit
+      // divisions cost more than the quad stage's rejection of the empty quads.
+      if (!kVisitAll && columns > kSpanMinimumColumns) {
         for (int k = 0; k < 3 && begin < end; ++k) {
           const std::int64_t best = row_top_left[k] + quad_reach[k], step = 2 * s.step_x[k];
           if (step == 0) {
@@ -111,7 +115,7 @@ void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect&
         }
       }
       i64x4 e[3];
-      for (int k = 0; k < 3; ++k) e[k] = row[k] + quad_step_x[k] * begin;
+      for (int k = 0; k < 3; ++k) e[k] = begin == 0 ? row[k] : row[k] + quad_step_x[k] * begin;
       for (std::int64_t j = begin; j < end; ++j) {
         visit(x0 + 2 * static_cast<int>(j), qy, static_cast<const i64x4*>(e));
         for (int k = 0; k < 3; ++k) e[k] += quad_step_x[k];
