@@ -2,6 +2,7 @@
 // colour bits: the renderer takes the widest the processor has, so an image must not depend on
 // which. (The kernel against the scalar sampler: quad_sampler_test.cpp.)
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <random>
@@ -11,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "raster/quad_filter.h"
+#include "raster/sampler.h"
 
 namespace rastrace {
 namespace {
@@ -67,6 +69,48 @@ TEST(QuadFilter, TheSse2AndAvx2KernelsGiveTheSameTexelsAndColourBits) {
       }
   }
   EXPECT_EQ(compared, 20000 * 16);
+}
+
+// REPEAT on a level whose size is not a power of two wraps without an integer division (a
+// quotient in double, corrected): every kernel must give wrap_coordinate's texel for every size,
+// out to the coordinate limit.
+TEST(QuadFilter, RepeatWrapsEqualTheScalarWrapForEverySizeOutToTheCoordinateLimit) {
+  std::mt19937 random(41);
+  std::uniform_real_distribution<float> any(-kCoordinateLimit, kCoordinateLimit), near(-3.0f, 3.0f);
+  std::vector<std::uint8_t> texels(16384 * 4);
+  std::vector<int> sizes;
+  for (int size = 1; size <= 300; ++size) sizes.push_back(size);
+  for (const int size : {1000, 4095, 4097, 12345, 16383, 16384}) sizes.push_back(size);
+  const float edges[] = {kCoordinateLimit, -kCoordinateLimit, 0.0f, -0.0f, 1.0f, -1.0f, 0.5f, -0.5f};
+  std::int64_t compared = 0;
+  for (const SimdLevel level : {SimdLevel::Sse2, SimdLevel::Avx2}) {
+    if (!simd_level_supported(level)) continue;
+    const QuadFilterKernel kernel = quad_filter_kernel(level);
+    for (const int size : sizes)
+      for (int trial = 0; trial < 40; ++trial) {
+        QuadFilterInput in;
+        in.levels[0] = {texels.data(), size, 1};
+        in.levels[1] = {texels.data(), size, 1};
+        in.blend = trial % 2 == 1;
+        for (int i = 0; i < 4; ++i) {
+          const int pick = trial * 4 + i;
+          in.s[i] = pick < 8 ? edges[pick] : (pick % 3 == 0 ? any(random) : near(random));
+          in.t[i] = 0.5f;
+        }
+        QuadFilterOutput out;
+        kernel(in, out);
+        for (int l = 0; l < (in.blend ? 8 : 4); ++l) {
+          const float u = in.s[l % 4] * static_cast<float>(size) - 0.5f;
+          const int i = static_cast<int>(std::floor(u));
+          ASSERT_EQ(out.x0[l], wrap_coordinate(i, size, TextureWrap::Repeat))
+              << to_string(level) << " size " << size << " s " << in.s[l % 4];
+          ASSERT_EQ(out.x1[l], wrap_coordinate(i + 1, size, TextureWrap::Repeat))
+              << to_string(level) << " size " << size << " s " << in.s[l % 4];
+          ++compared;
+        }
+      }
+  }
+  EXPECT_GT(compared, 300 * 40 * 4);
 }
 
 TEST(QuadFilter, RastraceSimdChoosesTheBaselineKernel) {
