@@ -200,17 +200,15 @@ inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, 
     const simd::i32x4 words =
         (bytes[0] & mask8) | (bytes[1] & mask8) << 8 | (bytes[2] & mask8) << 16 | (bytes[3] & mask8) << 24;
     std::uint8_t* const colour_rows[2] = {colour + pixel(0) * 4, colour + pixel(2) * 4};
-    simd::i32x4 stored_words;
-    for (int row = 0; row < 2; ++row) {
-      std::memcpy(&stored_words[2 * row], colour_rows[row], 4);
-      std::memcpy(&stored_words[2 * row + 1], colour_rows[row] + 4, 4);
-    }
+    std::int32_t stored_pixels[4];
+    for (int row = 0; row < 2; ++row) std::memcpy(stored_pixels + 2 * row, colour_rows[row], 8);
+    const simd::i32x4 stored_words{stored_pixels[0], stored_pixels[1], stored_pixels[2], stored_pixels[3]};
     const simd::i32x4 out = write ? words : stored_words;
+    const std::int32_t out_pixels[4] = {out[0], out[1], out[2], out[3]};
     for (int row = 0; row < 2; ++row) {
       depth_rows[row][0] = depths[2 * row];
       depth_rows[row][1] = depths[2 * row + 1];
-      std::memcpy(colour_rows[row], &out[2 * row], 4);
-      std::memcpy(colour_rows[row] + 4, &out[2 * row + 1], 4);
+      std::memcpy(colour_rows[row], out_pixels + 2 * row, 8);
     }
     if (tile_maximum_written) hiz->refresh(framebuffer, tile);
     return;
