@@ -20,8 +20,23 @@ CameraMatrices camera_matrices(const Scene& scene) {
 
 RenderResult render_scene(const Scene& scene, const RenderOptions& options, EventSink* sink) {
   RenderResult result{Framebuffer(scene.width, scene.height, options.debug_planes), {}, {}};
-  result.framebuffer.clear(options.clear_colour.value_or(scene.background));
-  Pipeline pipeline(result.framebuffer, options.pipeline, sink);
+  const RenderStats stats = render_scene_into(result.framebuffer, scene, options, sink);
+  result.pipeline = stats.pipeline;
+  result.raster = stats.raster;
+  return result;
+}
+
+RenderStats render_scene_into(Framebuffer& framebuffer, const Scene& scene, const RenderOptions& options,
+                              EventSink* sink) {
+  if (framebuffer.width() != scene.width || framebuffer.height() != scene.height ||
+      framebuffer.has_debug_planes() != options.debug_planes)
+    throw InputError(scene.name + ": a " + std::to_string(framebuffer.width()) + "x" +
+                     std::to_string(framebuffer.height()) + " framebuffer" +
+                     (framebuffer.has_debug_planes() ? " with" : " without") + " debug planes for a " +
+                     std::to_string(scene.width) + "x" + std::to_string(scene.height) + " scene" +
+                     (options.debug_planes ? " with" : " without") + " them");
+  framebuffer.clear(options.clear_colour.value_or(scene.background));
+  Pipeline pipeline(framebuffer, options.pipeline, sink);
   const CameraMatrices camera = camera_matrices(scene);
   pipeline.set_camera(camera.view, camera.projection);
   const std::span<const DrawCall> calls = options.object_draws;
@@ -50,9 +65,7 @@ RenderResult render_scene(const Scene& scene, const RenderOptions& options, Even
     pipeline.draw(object.mesh, object.transform, call, scene.textures);
   }
   pipeline.finish();
-  result.pipeline = pipeline.stats();
-  result.raster = pipeline.raster_stats();
-  return result;
+  return {pipeline.stats(), pipeline.raster_stats()};
 }
 
 TextureLevels texture_levels(const Scene& scene) {

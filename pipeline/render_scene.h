@@ -45,6 +45,17 @@ struct RenderResult {
 // Throws InputError for an invalid scene (indices, materials, textures out of range).
 RenderResult render_scene(const Scene& scene, const RenderOptions& options, EventSink* sink);
 
+struct RenderStats {
+  PipelineStats pipeline;
+  RasterStats raster;
+};
+// The same into a framebuffer the caller keeps from frame to frame, as a GL context keeps its
+// render target: it is cleared (to options.clear_colour, else the scene's background) and drawn
+// into, and a new frame allocates and faults in no 6 MB of fresh pages. It must be the scene's
+// size, with debug planes exactly when options.debug_planes; InputError otherwise.
+RenderStats render_scene_into(Framebuffer& framebuffer, const Scene& scene, const RenderOptions& options,
+                              EventSink* sink);
+
 // Every texture's level sizes, as render_scene's texel accesses address them: what the trace
 // metadata records and a live cache bank lays out in memory.
 TextureLevels texture_levels(const Scene& scene);

@@ -1,5 +1,9 @@
 #include "raster/quad_sampler.h"
 
+#include <algorithm>
+
+#include "raster/quad_filter.h"
+
 namespace rastrace {
 
 namespace {
@@ -18,51 +22,19 @@ i32x4 wrap_coordinates(i32x4 i, int size, TextureWrap wrap) {
   return simd::clamp(i, 0, size - 1);
 }
 
-// The texels of one level for the four pixels: (x0, y0) alone for NEAREST; the 2x2 footprint
-// (x0..x1, y0..y1) and the weights (a, b) of x1 and y1 for LINEAR.
-struct LevelTexels {
-  i32x4 x0, x1, y0, y1;
-  f32x4 a, b;
+// The texel each pixel reads with NEAREST in `image`: (x[i], y[i]).
+struct NearestTexels {
+  i32x4 x, y;
 };
 
-LevelTexels level_texels(const Image& image, TextureFilter filter, const SamplerState& state, f32x4 s, f32x4 t) {
-  LevelTexels texels{};
+NearestTexels nearest_texels(const Image& image, const SamplerState& state, f32x4 s, f32x4 t) {
   const f32x4 width = splat(static_cast<float>(image.width)), height = splat(static_cast<float>(image.height));
-  if (filter == TextureFilter::Nearest) {
-    texels.x0 = wrap_coordinates(simd::floor_int(s * width), image.width, state.wrap_s);
-    texels.y0 = wrap_coordinates(simd::floor_int(t * height), image.height, state.wrap_t);
-    return texels;
-  }
-  const f32x4 u = s * width - splat(0.5f), v = t * height - splat(0.5f);
-  const i32x4 iu = simd::floor_int(u), iv = simd::floor_int(v);
-  texels.a = u - simd::to_float(iu);
-  texels.b = v - simd::to_float(iv);
-  texels.x0 = wrap_coordinates(iu, image.width, state.wrap_s);
-  texels.x1 = wrap_coordinates(iu + splat(1), image.width, state.wrap_s);
-  texels.y0 = wrap_coordinates(iv, image.height, state.wrap_t);
-  texels.y1 = wrap_coordinates(iv + splat(1), image.height, state.wrap_t);
-  return texels;
+  return {wrap_coordinates(simd::floor_int(s * width), image.width, state.wrap_s),
+          wrap_coordinates(simd::floor_int(t * height), image.height, state.wrap_t)};
 }
 
 inline f32x4 fetch(const Image& image, std::int32_t x, std::int32_t y) {
   return simd::bytes_to_float(image.texel(x, y)) * splat(1.0f / 255.0f);
-}
-
-// Records pixel `i`'s reads of `level` and returns its filtered colour.
-f32x4 filter_pixel(const Image& image, unsigned level, TextureFilter filter, const LevelTexels& texels, int i,
-                   TexelRecorder& recorder, const TexelSite& site) {
-  if (filter == TextureFilter::Nearest) {
-    recorder.record(site, level, texels.x0[i], texels.y0[i]);
-    return fetch(image, texels.x0[i], texels.y0[i]);
-  }
-  const std::int32_t x0 = texels.x0[i], x1 = texels.x1[i], y0 = texels.y0[i], y1 = texels.y1[i];
-  recorder.record_footprint(site, level, x0, x1, y0, y1);
-  const f32x4 t00 = fetch(image, x0, y0), t10 = fetch(image, x1, y0);
-  const f32x4 t01 = fetch(image, x0, y1), t11 = fetch(image, x1, y1);
-  const f32x4 a = splat(texels.a[i]), b = splat(texels.b[i]);
-  const f32x4 top = t00 + (t10 - t00) * a;
-  const f32x4 bottom = t01 + (t11 - t01) * a;
-  return top + (bottom - top) * b;
 }
 
 f32x4 safe_coordinates(f32x4 s) { return simd::clamp(simd::finite_or_zero(s), -kCoordinateLimit, kCoordinateLimit); }
@@ -75,18 +47,64 @@ void sample_quad(const Texture& texture, const SamplerState& state, f32x4 s, f32
   t = safe_coordinates(t);
   const LevelPlan plan = plan_levels(texture, state, lambda);
   const Image& first = texture.levels[plan.first];
-  const LevelTexels first_texels = level_texels(first, plan.filter, state, s, t);
-  // LINEAR_MIPMAP_LINEAR between two levels: the second level's texels too.
-  const Image& second = texture.levels[plan.blend ? plan.first + 1 : plan.first];
-  const LevelTexels second_texels = plan.blend ? level_texels(second, TextureFilter::Linear, state, s, t) : LevelTexels{};
+  if (plan.filter == TextureFilter::Linear) {
+    QuadFilterInput in;
+    in.levels[0] = {first.rgba.data(), first.width, first.height};
+    if (plan.blend) {
+      const Image& second = texture.levels[plan.first + 1];
+      in.levels[1] = {second.rgba.data(), second.width, second.height};
+    }
+    in.repeat_s = state.wrap_s == TextureWrap::Repeat;
+    in.repeat_t = state.wrap_t == TextureWrap::Repeat;
+    in.blend = plan.blend;
+    in.fraction = plan.fraction;
+    // The sampled pixels in order; a blend of one or two of them is filtered in their lanes alone.
+    int sampled[4], count = 0;
+    for (int i = 0; i < 4; ++i)
+      if (pixels >> i & 1u) sampled[count++] = i;
+    if (count == 0) return;
+    in.two_pixels = plan.blend && count <= 2;
+    if (in.two_pixels) {
+      for (int j = 0; j < 2; ++j) {
+        const int i = sampled[std::min(j, count - 1)];
+        in.s[j] = s[i];
+        in.t[j] = t[i];
+      }
+    } else {
+      in.s = s;
+      in.t = t;
+    }
+    QuadFilterOutput out;
+    renderer_quad_filter()(in, out);
+    const int second_level_lane = in.two_pixels ? 2 : 4;
+    for (int j = 0; j < count; ++j) {
+      const int i = sampled[j], lane = in.two_pixels ? j : i;
+      site.pixel_x = static_cast<std::uint16_t>(qx + (i & 1));
+      site.pixel_y = static_cast<std::uint16_t>(qy + (i >> 1));
+      recorder.record_footprint(site, plan.first, out.x0[lane], out.x1[lane], out.y0[lane], out.y1[lane]);
+      if (plan.blend) {
+        const int second = lane + second_level_lane;
+        recorder.record_footprint(site, plan.first + 1, out.x0[second], out.x1[second], out.y0[second],
+                                  out.y1[second]);
+      }
+    }
+    if (in.two_pixels) {
+      for (int j = 0; j < count; ++j)
+        for (int c = 0; c < 4; ++c) rgba[c][sampled[j]] = out.rgba[c][j];
+    } else {
+      for (int c = 0; c < 4; ++c) rgba[c] = out.rgba[c];
+    }
+    return;
+  }
+  // NEAREST within one level (NEAREST, NEAREST_MIPMAP_NEAREST, or a NEAREST magnification).
+  const NearestTexels texels = nearest_texels(first, state, s, t);
   for (int i = 0; i < 4; ++i) {
     if (!(pixels >> i & 1u)) continue;
     site.pixel_x = static_cast<std::uint16_t>(qx + (i & 1));
     site.pixel_y = static_cast<std::uint16_t>(qy + (i >> 1));
-    rgba[i] = filter_pixel(first, plan.first, plan.filter, first_texels, i, recorder, site);
-    if (!plan.blend) continue;
-    const f32x4 t2 = filter_pixel(second, plan.first + 1, TextureFilter::Linear, second_texels, i, recorder, site);
-    rgba[i] = rgba[i] + (t2 - rgba[i]) * splat(plan.fraction);
+    recorder.record(site, plan.first, texels.x[i], texels.y[i]);
+    const f32x4 colour = fetch(first, texels.x[i], texels.y[i]);
+    for (int c = 0; c < 4; ++c) rgba[c][i] = colour[c];
   }
 }
 
@@ -101,7 +119,7 @@ void sample_quad_per_pixel(f32x4 s, f32x4 t, unsigned pixels, int qx, int qy, Te
     site.pixel_x = static_cast<std::uint16_t>(qx + (i & 1));
     site.pixel_y = static_cast<std::uint16_t>(qy + (i >> 1));
     const glm::vec4 c = sample(s[i], t[i], site);
-    rgba[i] = f32x4{c.r, c.g, c.b, c.a};
+    for (int ch = 0; ch < 4; ++ch) rgba[ch][i] = c[ch];
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstring>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -101,7 +102,7 @@ inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, 
   if (!mask) return;
   ++stats.quads;
 
-  const unsigned covered = static_cast<unsigned>(std::popcount(mask));
+  const unsigned covered = simd::lanes_set(mask);
   stats.fragments += covered;
 
   // Barycentric weights of vertices 1 and 2 at the four centres (helper pixels included).
@@ -126,10 +127,19 @@ inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, 
       return;
     }
   }
+  // A quad wholly inside the image reads and writes its pixels as two rows of two lanes; one on
+  // the right or bottom border (odd sizes) pixel by pixel.
+  const bool whole = qx + 1 < width && qy + 1 < height;
+  float* const depth_rows[2] = {depth + pixel(0), depth + pixel(2)};
   auto depth_test = [&] {
     unsigned pass = 0;
-    for (int i = 0; i < 4; ++i)
-      if ((mask >> i & 1u) && z[i] < depth[pixel(i)]) pass |= 1u << i;
+    if (whole) {
+      const f32x4 stored{depth_rows[0][0], depth_rows[0][1], depth_rows[1][0], depth_rows[1][1]};
+      pass = mask & simd::lanes_true(z < stored);
+    } else {
+      for (int i = 0; i < 4; ++i)
+        if ((mask >> i & 1u) && z[i] < depth[pixel(i)]) pass |= 1u << i;
+    }
     framebuffer_events.record(FramebufferOp::DepthRead, qx, qy, mask, state.triangle);
     return pass;
   };
@@ -138,25 +148,25 @@ inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, 
   const bool late = options.depth_test == DepthTest::Late;
   unsigned pass = late ? 0u : depth_test();
   if (!late) {
-    stats.fragments_rejected_early += covered - static_cast<unsigned>(std::popcount(pass));
+    stats.fragments_rejected_early += covered - simd::lanes_set(pass);
     if (!pass) return;
   }
   const unsigned shade = late ? mask : pass;
-  stats.fragments_shaded += static_cast<unsigned>(std::popcount(shade));
+  stats.fragments_shaded += simd::lanes_set(shade);
   // Perspective correction: every attribute but q and z is interpolated divided by w.
   const f32x4 w = splat(1.0f) / attribute(0);
-  const f32x4 red = attribute(3) * w, green = attribute(4) * w, blue = attribute(5) * w, alpha = attribute(6) * w;
-  f32x4 shaded[4];  // per pixel, channels in lanes
-  for (int i = 0; i < 4; ++i) shaded[i] = f32x4{red[i], green[i], blue[i], alpha[i]};
+  // Channels in vectors, pixels in lanes, as the sampler returns them.
+  f32x4 shaded[4] = {attribute(3) * w, attribute(4) * w, attribute(5) * w, attribute(6) * w};
   if constexpr (kTextured) {
     const f32x4 u = attribute(1) * w, v = attribute(2) * w;
     const Texture* texture = state.texture;
-    stats.fragments_textured += static_cast<unsigned>(std::popcount(shade));
+    stats.fragments_textured += simd::lanes_set(shade);
     const float dsdx = u[1] - u[0], dtdx = v[1] - v[0], dsdy = u[2] - u[0], dtdy = v[2] - v[0];
     TexelSite site;
     site.texture = state.texture_id;
     site.triangle = state.triangle;
-    f32x4 texel_colour[4];
+    // Lanes of pixels the sampler skips keep 1: their products are never written.
+    f32x4 texel_colour[4] = {splat(1.0f), splat(1.0f), splat(1.0f), splat(1.0f)};
     if (options.sampler.max_anisotropy > 1 && options.sampler.aniso_rule == AnisotropyRule::Probes) {
       const ProbeFootprint footprint = probe_footprint(*texture, options.sampler, dsdx, dtdx, dsdy, dtdy);
       sample_quad_probes(*texture, options.sampler, footprint, u, v, shade, qx, qy, texels, site, texel_colour);
@@ -168,8 +178,7 @@ inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, 
           compute_lod(options.sampler, texture->levels[0].width, texture->levels[0].height, dsdx, dtdx, dsdy, dtdy);
       sample_quad(*texture, options.sampler, u, v, lambda, shade, qx, qy, texels, site, texel_colour);
     }
-    for (int i = 0; i < 4; ++i)
-      if (shade >> i & 1u) shaded[i] *= texel_colour[i];
+    for (int c = 0; c < 4; ++c) shaded[c] *= texel_colour[c];
   }
   if (late) pass = depth_test();
   if (!pass) return;
@@ -177,15 +186,40 @@ inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, 
   framebuffer_events.record(FramebufferOp::ColourWrite, qx, qy, pass, state.triangle);
   bool tile_maximum_written = false;
   std::uint8_t* colour = framebuffer.colour();
-  stats.fragments_passed += static_cast<unsigned>(std::popcount(pass));
+  stats.fragments_passed += simd::lanes_set(pass);
+  simd::i32x4 bytes[4];
+  for (int c = 0; c < 4; ++c)
+    bytes[c] = simd::truncate(simd::clamp(shaded[c], 0.0f, 1.0f) * splat(255.0f) + splat(0.5f));
+  if (whole && !kDebug && std::endian::native == std::endian::little) {
+    // The passing lanes' depths and RGBA words over the stored ones, two pixels per row.
+    const simd::i32x4 write = simd::lanes_of(pass);
+    const f32x4 stored{depth_rows[0][0], depth_rows[0][1], depth_rows[1][0], depth_rows[1][1]};
+    if (hiz && (pass & simd::lanes_true(stored >= splat(hiz->farthest(tile))))) tile_maximum_written = true;
+    const f32x4 depths = write ? z : stored;
+    const simd::i32x4 mask8 = splat(0xFF);
+    const simd::i32x4 words =
+        (bytes[0] & mask8) | (bytes[1] & mask8) << 8 | (bytes[2] & mask8) << 16 | (bytes[3] & mask8) << 24;
+    std::uint8_t* const colour_rows[2] = {colour + pixel(0) * 4, colour + pixel(2) * 4};
+    std::int32_t stored_pixels[4];
+    for (int row = 0; row < 2; ++row) std::memcpy(stored_pixels + 2 * row, colour_rows[row], 8);
+    const simd::i32x4 stored_words{stored_pixels[0], stored_pixels[1], stored_pixels[2], stored_pixels[3]};
+    const simd::i32x4 out = write ? words : stored_words;
+    const std::int32_t out_pixels[4] = {out[0], out[1], out[2], out[3]};
+    for (int row = 0; row < 2; ++row) {
+      depth_rows[row][0] = depths[2 * row];
+      depth_rows[row][1] = depths[2 * row + 1];
+      std::memcpy(colour_rows[row], out_pixels + 2 * row, 8);
+    }
+    if (tile_maximum_written) hiz->refresh(framebuffer, tile);
+    return;
+  }
   for (int i = 0; i < 4; ++i) {
     if (!(pass >> i & 1u)) continue;
     const std::size_t p = pixel(i);
     if (hiz && depth[p] >= hiz->farthest(tile)) tile_maximum_written = true;
     depth[p] = z[i];
-    const simd::i32x4 bytes = simd::truncate(simd::clamp(shaded[i], 0.0f, 1.0f) * splat(255.0f) + splat(0.5f));
     std::uint8_t* out = colour + p * 4;
-    for (int ch = 0; ch < 4; ++ch) out[ch] = static_cast<std::uint8_t>(bytes[ch]);
+    for (int c = 0; c < 4; ++c) out[c] = static_cast<std::uint8_t>(bytes[c][i]);
     if constexpr (kDebug) ++framebuffer.write_count()[p];
   }
   if (tile_maximum_written) hiz->refresh(framebuffer, tile);

@@ -46,20 +46,6 @@ const char* to_string(TextureFilter filter) { return enum_to_string(filter, kFil
 
 const char* to_string(TextureWrap wrap) { return enum_to_string(wrap, kWraps); }
 
-float compute_lod(const SamplerState& state, int width, int height, float dsdx, float dtdx, float dsdy, float dtdy) {
-  const float w = static_cast<float>(width), h = static_cast<float>(height);
-  const float dudx = dsdx * w, dvdx = dtdx * h, dudy = dsdy * w, dvdy = dtdy * h;
-  float rho;
-  if (state.lod == LodFormula::Lengths) {
-    rho = std::max(std::sqrt(dudx * dudx + dvdx * dvdx), std::sqrt(dudy * dudy + dvdy * dvdy));
-  } else {
-    rho = std::max(std::max(std::fabs(dudx), std::fabs(dudy)), std::max(std::fabs(dvdx), std::fabs(dvdy)));
-  }
-  // rho = 0 (a constant coordinate) is the deepest magnification; NaN from a degenerate quad too.
-  if (!(rho > 0.0f)) return -128.0f;
-  return std::log2(rho);
-}
-
 float safe_coordinate(float s) {
   if (!std::isfinite(s)) return 0.0f;
   return std::clamp(s, -kCoordinateLimit, kCoordinateLimit);
@@ -114,46 +100,6 @@ glm::vec4 sample_level(const Texture& texture, unsigned level, TextureFilter fil
   const Image& image = texture.levels[level];
   return filter == TextureFilter::Nearest ? sample_nearest(image, level, state, s, t, recorder, site)
                                           : sample_linear(image, level, state, s, t, recorder, site);
-}
-
-LevelPlan plan_levels(const Texture& texture, const SamplerState& state, float lambda) {
-  LevelPlan plan;
-  // Section 8.14: c = 0.5 only for a LINEAR magnification with a NEAREST_MIPMAP_* minification.
-  const float c = (state.mag_filter == TextureFilter::Linear && state.min_filter == TextureFilter::NearestMipmapNearest)
-                      ? 0.5f
-                      : 0.0f;
-  if (lambda <= c) {
-    plan.filter = state.mag_filter;
-    return plan;
-  }
-  const unsigned q = static_cast<unsigned>(texture.levels.size()) - 1;  // the last level
-  switch (state.min_filter) {
-    case TextureFilter::Nearest:
-    case TextureFilter::Linear:
-      plan.filter = state.min_filter;
-      return plan;
-    case TextureFilter::NearestMipmapNearest:
-    case TextureFilter::LinearMipmapNearest:
-      // Equation 8.10: d = ceil(lambda + 1/2) - 1 for lambda > 1/2, else the base level.
-      if (lambda > 0.5f)
-        plan.first = static_cast<unsigned>(std::min(std::ceil(lambda + 0.5f) - 1.0f, static_cast<float>(q)));
-      plan.filter =
-          state.min_filter == TextureFilter::NearestMipmapNearest ? TextureFilter::Nearest : TextureFilter::Linear;
-      return plan;
-    case TextureFilter::LinearMipmapLinear: {
-      plan.filter = TextureFilter::Linear;
-      if (lambda >= static_cast<float>(q)) {
-        plan.first = q;
-        return plan;
-      }
-      const float floor_lambda = std::floor(lambda);
-      plan.first = static_cast<unsigned>(floor_lambda);
-      plan.blend = true;
-      plan.fraction = lambda - floor_lambda;
-      return plan;
-    }
-  }
-  return plan;
 }
 
 glm::vec4 sample_texture(const Texture& texture, const SamplerState& state, float s, float t, float lambda,

@@ -69,7 +69,23 @@ const char* to_string(TextureWrap wrap);
 
 // lambda = log2(rho) for one 2x2 quad. Derivatives are in normalised coordinates (s, t) per pixel;
 // the level-0 size scales them to texels. Returns -inf-safe values (rho = 0 gives -128).
-float compute_lod(const SamplerState& state, int width, int height, float dsdx, float dtdx, float dsdy, float dtdy);
+// Inline, with plan_levels: the quad stage calls both once per quad.
+inline float compute_lod(const SamplerState& state, int width, int height, float dsdx, float dtdx, float dsdy,
+                         float dtdy) {
+  const float w = static_cast<float>(width), h = static_cast<float>(height);
+  const float dudx = dsdx * w, dvdx = dtdx * h, dudy = dsdy * w, dvdy = dtdy * h;
+  float rho;
+  if (state.lod == LodFormula::Lengths) {
+    // max(sqrt(x), sqrt(y)) as sqrt(max(x, y)): the square root is correctly rounded and
+    // monotonic, so the two are the same float (NaNs included: std::max keeps its first operand).
+    rho = std::sqrt(std::max(dudx * dudx + dvdx * dvdx, dudy * dudy + dvdy * dvdy));
+  } else {
+    rho = std::max(std::max(std::fabs(dudx), std::fabs(dudy)), std::max(std::fabs(dvdx), std::fabs(dvdy)));
+  }
+  // rho = 0 (a constant coordinate) is the deepest magnification; NaN from a degenerate quad too.
+  if (!(rho > 0.0f)) return -128.0f;
+  return std::log2(rho);
+}
 
 // The levels a sample with level of detail lambda reads (section 8.14): one level with the
 // filter within it, or, for LINEAR_MIPMAP_LINEAR between two levels, `first` and `first + 1`
@@ -81,7 +97,45 @@ struct LevelPlan {
   bool blend = false;
   float fraction = 0.0f;
 };
-LevelPlan plan_levels(const Texture& texture, const SamplerState& state, float lambda);
+inline LevelPlan plan_levels(const Texture& texture, const SamplerState& state, float lambda) {
+  LevelPlan plan;
+  // Section 8.14: c = 0.5 only for a LINEAR magnification with a NEAREST_MIPMAP_* minification.
+  const float c = (state.mag_filter == TextureFilter::Linear && state.min_filter == TextureFilter::NearestMipmapNearest)
+                      ? 0.5f
+                      : 0.0f;
+  if (lambda <= c) {
+    plan.filter = state.mag_filter;
+    return plan;
+  }
+  const unsigned q = static_cast<unsigned>(texture.levels.size()) - 1;  // the last level
+  switch (state.min_filter) {
+    case TextureFilter::Nearest:
+    case TextureFilter::Linear:
+      plan.filter = state.min_filter;
+      return plan;
+    case TextureFilter::NearestMipmapNearest:
+    case TextureFilter::LinearMipmapNearest:
+      // Equation 8.10: d = ceil(lambda + 1/2) - 1 for lambda > 1/2, else the base level.
+      if (lambda > 0.5f)
+        plan.first = static_cast<unsigned>(std::min(std::ceil(lambda + 0.5f) - 1.0f, static_cast<float>(q)));
+      plan.filter =
+          state.min_filter == TextureFilter::NearestMipmapNearest ? TextureFilter::Nearest : TextureFilter::Linear;
+      return plan;
+    case TextureFilter::LinearMipmapLinear: {
+      plan.filter = TextureFilter::Linear;
+      if (lambda >= static_cast<float>(q)) {
+        plan.first = q;
+        return plan;
+      }
+      const float floor_lambda = std::floor(lambda);
+      plan.first = static_cast<unsigned>(floor_lambda);
+      plan.blend = true;
+      plan.fraction = lambda - floor_lambda;
+      return plan;
+    }
+  }
+  return plan;
+}
 
 // Texture coordinates as the sampler may scale them: 0 where not finite, and clamped to +-2^16 so
 // that s * 16384 fits an int. REPEAT only needs s modulo 1, which a float beyond +-2^16 has lost

@@ -28,6 +28,23 @@ inline unsigned non_negative_mask(const i64x4& v) {
   return static_cast<unsigned>((~sign[0] & 1) | (~sign[1] & 2) | (~sign[2] & 4) | (~sign[3] & 8));
 }
 
+// The number of bits set in a 4-bit lane mask, from a table: baseline x86-64 has no popcnt
+// instruction, and std::popcount there is a call into libgcc.
+inline unsigned lanes_set(unsigned mask) {
+  constexpr unsigned char kCounts[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+  return kCounts[mask & 15u];
+}
+
+// Bit i set where lane i of a comparison's result is true (-1).
+inline unsigned lanes_true(i32x4 comparison) {
+  return static_cast<unsigned>((comparison[0] & 1) | (comparison[1] & 2) | (comparison[2] & 4) | (comparison[3] & 8));
+}
+// The inverse: lane i is -1 where bit i of `mask` is set, else 0.
+inline i32x4 lanes_of(unsigned mask) {
+  const i32x4 bits{1, 2, 4, 8};
+  return (splat(static_cast<std::int32_t>(mask)) & bits) != splat(0);
+}
+
 // static_cast<float> of each lane (one cvtsi2ss per lane on SSE2: exact as the scalar cast).
 inline f32x4 to_float(const i64x4& v) { return __builtin_convertvector(v, f32x4); }
 inline f32x4 to_float(i32x4 v) { return __builtin_convertvector(v, f32x4); }

@@ -36,6 +36,8 @@ struct PixelRect {
 };
 
 inline constexpr int kTraversalTile = 8;  // the 8x8 tiles of Tiled8 and Hilbert8 (and of hierarchical Z)
+// Rows of more quads than this are cut to the quads their edges may let a pixel into.
+inline constexpr int kSpanMinimumColumns = 4;
 
 // How far the bounding box's corner is aligned down (setup_triangle's `align`).
 inline int traversal_alignment(Traversal traversal) {
@@ -80,17 +82,48 @@ void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect&
     quad_step_x[k] = i64x4{} + 2 * s.step_x[k];
     quad_step_y[k] = i64x4{} + 2 * s.step_y[k];
   }
+  // Per edge: the largest of its four pixels' values over the quad's top-left one (the maximum
+  // of a linear function over the quad is at the pixel its gradient points to), fill-rule bias
+  // included.
+  std::int64_t quad_reach[3];
+  for (int k = 0; k < 3; ++k)
+    quad_reach[k] = std::max<std::int64_t>(0, s.step_x[k]) + std::max<std::int64_t>(0, s.step_y[k]) + s.bias[k];
   // The quads of the rectangle whose top-left quad has edge functions `first`, row-major.
   const auto quads_of_rectangle = [&](int x0, int y0, int x1, int y1, const std::int64_t* first) {
     i64x4 row[3];
     for (int k = 0; k < 3; ++k) row[k] = pixel_offsets[k] + first[k];
+    std::int64_t row_top_left[3] = {first[0], first[1], first[2]};
+    const std::int64_t columns = (x1 - x0) / 2 + 1;
     for (int qy = y0; qy <= y1; qy += 2) {
-      i64x4 e[3] = {row[0], row[1], row[2]};
-      for (int qx = x0; qx <= x1; qx += 2) {
-        visit(qx, qy, static_cast<const i64x4*>(e));
+      // The row's quads j in [begin, end) that may cover a pixel: for every edge, the best pixel
+      // of quad j, row_top_left + reach + 2 step_x j, is >= 0. Quads outside cover nothing, and
+      // the quad stage would leave them at once; skipping them visits the same quads with
+      // coverage in the same order (llvmpipe and hardware skip them in blocks the same way).
+      std::int64_t begin = 0, end = columns;
+      // Rows of a few quads (the small triangles of a dense mesh) are visited whole: three 64-bit
+      // divisions cost more than the quad stage's rejection of the empty quads.
+      if (!kVisitAll && columns > kSpanMinimumColumns) {
+        for (int k = 0; k < 3 && begin < end; ++k) {
+          const std::int64_t best = row_top_left[k] + quad_reach[k], step = 2 * s.step_x[k];
+          if (step == 0) {
+            if (best < 0) end = 0;
+          } else if (step > 0) {  // best + step j >= 0 from j = ceil(-best / step)
+            if (best < 0) begin = std::max(begin, (-best + step - 1) / step);
+          } else {  // up to j = floor(best / -step)
+            end = best < 0 ? 0 : std::min(end, best / -step + 1);
+          }
+        }
+      }
+      i64x4 e[3];
+      for (int k = 0; k < 3; ++k) e[k] = begin == 0 ? row[k] : row[k] + quad_step_x[k] * begin;
+      for (std::int64_t j = begin; j < end; ++j) {
+        visit(x0 + 2 * static_cast<int>(j), qy, static_cast<const i64x4*>(e));
         for (int k = 0; k < 3; ++k) e[k] += quad_step_x[k];
       }
-      for (int k = 0; k < 3; ++k) row[k] += quad_step_y[k];
+      for (int k = 0; k < 3; ++k) {
+        row[k] += quad_step_y[k];
+        row_top_left[k] += 2 * s.step_y[k];
+      }
     }
   };
   std::int64_t corner[3];

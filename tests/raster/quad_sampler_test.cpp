@@ -96,9 +96,9 @@ template <class Scalar, class Quad>
   for (int i = 0; i < 4; ++i) {
     if (!(pixels >> i & 1u)) continue;
     for (int ch = 0; ch < 4; ++ch)
-      if (!same_bits(scalar_rgba[i][ch], quad_rgba[i][ch]))
+      if (!same_bits(scalar_rgba[i][ch], quad_rgba[ch][i]))
         return ::testing::AssertionFailure() << "pixel " << i << " s " << s[i] << " t " << t[i] << ": "
-                                             << scalar_rgba[i][ch] << " against " << quad_rgba[i][ch];
+                                             << scalar_rgba[i][ch] << " against " << quad_rgba[ch][i];
     ++compared;
   }
   return ::testing::AssertionSuccess();
