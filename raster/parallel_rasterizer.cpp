@@ -452,8 +452,7 @@ void ParallelRasterizer::merge_in_place(Batch& batch) {
   walk_steps(
       batch, [&](std::uint32_t triangle) { merge_triangle(batch, triangle, plan); }, [] {});
   if (runs.empty()) return;
-  const std::size_t texels = runs.back().texel_to + (runs.back().texel_end - runs.back().texel_begin);
-  const std::size_t events = runs.back().event_to + (runs.back().event_end - runs.back().event_begin);
+  const std::size_t texels = runs.back().texel_after(), events = runs.back().event_after();
   texels_to_ = texels ? sink_->texel_slots(texels) : std::span<TexelAccess>();
   events_to_ = events ? sink_->framebuffer_slots(events) : std::span<FramebufferAccess>();
   merging_ = &batch;
@@ -473,8 +472,7 @@ void ParallelRasterizer::plan_quad(std::size_t tile, TileCursor& cursor, const Q
     last->texel_end = mark.texel_end;
     last->event_end = mark.events_end;
   } else {
-    const std::size_t texel_to = last ? last->texel_to + (last->texel_end - last->texel_begin) : 0;
-    const std::size_t event_to = last ? last->event_to + (last->event_end - last->event_begin) : 0;
+    const std::size_t texel_to = last ? last->texel_after() : 0, event_to = last ? last->event_after() : 0;
     runs.push_back({static_cast<std::uint32_t>(tile), static_cast<std::uint32_t>(cursor.texel), mark.texel_end,
                     static_cast<std::uint32_t>(cursor.event), mark.events_end, texel_to, event_to});
   }

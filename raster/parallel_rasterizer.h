@@ -92,6 +92,9 @@ class ParallelRasterizer {
     std::uint32_t tile;
     std::uint32_t texel_begin, texel_end, event_begin, event_end;  // in the tile's buffers
     std::size_t texel_to, event_to;                                 // in the batch's merged events
+    // Where the next run's events go in the merged events.
+    std::size_t texel_after() const { return texel_to + (texel_end - texel_begin); }
+    std::size_t event_after() const { return event_to + (event_end - event_begin); }
   };
   enum class StepKind : std::uint8_t { BeginDraw, Fetches, Triangle, Flush, EndDraw };
   struct Step {

@@ -92,11 +92,10 @@ void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect&
   const auto quads_of_rectangle = [&](int x0, int y0, int x1, int y1, const std::int64_t* first) {
     i64x4 row[3];
     for (int k = 0; k < 3; ++k) row[k] = pixel_offsets[k] + first[k];
-    std::int64_t row_top_left[3] = {first[0], first[1], first[2]};
     const std::int64_t columns = (x1 - x0) / 2 + 1;
     for (int qy = y0; qy <= y1; qy += 2) {
       // The row's quads j in [begin, end) that may cover a pixel: for every edge, the best pixel
-      // of quad j, row_top_left + reach + 2 step_x j, is >= 0. Quads outside cover nothing, and
+      // of quad j, row[k][0] (the row's top-left pixel) + reach + 2 step_x j, is >= 0. Quads outside cover nothing, and
       // the quad stage would leave them at once; skipping them visits the same quads with
       // coverage in the same order (llvmpipe and hardware skip them in blocks the same way).
       std::int64_t begin = 0, end = columns;
@@ -104,7 +103,7 @@ void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect&
       // divisions cost more than the quad stage's rejection of the empty quads.
       if (!kVisitAll && columns > kSpanMinimumColumns) {
         for (int k = 0; k < 3 && begin < end; ++k) {
-          const std::int64_t best = row_top_left[k] + quad_reach[k], step = 2 * s.step_x[k];
+          const std::int64_t best = row[k][0] + quad_reach[k], step = 2 * s.step_x[k];
           if (step == 0) {
             if (best < 0) end = 0;
           } else if (step > 0) {  // best + step j >= 0 from j = ceil(-best / step)
@@ -120,10 +119,7 @@ void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect&
         visit(x0 + 2 * static_cast<int>(j), qy, static_cast<const i64x4*>(e));
         for (int k = 0; k < 3; ++k) e[k] += quad_step_x[k];
       }
-      for (int k = 0; k < 3; ++k) {
-        row[k] += quad_step_y[k];
-        row_top_left[k] += 2 * s.step_y[k];
-      }
+      for (int k = 0; k < 3; ++k) row[k] += quad_step_y[k];
     }
   };
   std::int64_t corner[3];
