@@ -205,6 +205,57 @@ void BM_TraceChunkStages_File(benchmark::State& state) {
 }
 BENCHMARK(BM_TraceChunkStages_File)->ArgName("stage")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
+// The two halves of writing RASTRACE_BENCH_TRACE's records, one thread, CPU time: column encoding
+// alone (/stage:0) and zstd alone with one kept context (/stage:1 at level 1, /stage:3 at level
+// 3), as a compression thread of the writer does them chunk after chunk.
+void BM_TraceWriteStages_File(benchmark::State& state) {
+  const char* path = std::getenv("RASTRACE_BENCH_TRACE");
+  if (!path) {
+    state.SkipWithError("set RASTRACE_BENCH_TRACE to a trace file");
+    return;
+  }
+  const std::vector<StoredChunk> payloads = read_stored_chunks(path);
+  std::vector<DecodedChunk> decoded(payloads.size());
+  for (std::size_t i = 0; i < payloads.size(); ++i) {
+    const StoredChunk& p = payloads[i];
+    DecodedChunk& d = decoded[i];
+    if (p.info.kind == RecordKind::Vertex) decode_vertex_records(p.raw, p.info.records, d.draw, d.vertices);
+    if (p.info.kind == RecordKind::Texel) decode_texel_records(p.raw, p.info.records, d.texels);
+    if (p.info.kind == RecordKind::Framebuffer) decode_framebuffer_records(p.raw, p.info.records, d.framebuffer);
+    if (p.info.kind == RecordKind::Address) decode_address_records(p.raw, p.info.records, d.addresses);
+  }
+  const int stage = static_cast<int>(state.range(0));
+  ZSTD_CCtx* cctx = ZSTD_createCCtx();
+  std::string raw;
+  std::vector<char> compressed;
+  std::uint64_t records = 0, stored = 0;
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < payloads.size(); ++i) {
+      const StoredChunk& p = payloads[i];
+      const DecodedChunk& d = decoded[i];
+      if (stage == 0) {
+        if (p.info.kind == RecordKind::Vertex) encode_vertex_records(d.draw, d.vertices, raw);
+        if (p.info.kind == RecordKind::Texel) encode_texel_records(d.texels, raw);
+        if (p.info.kind == RecordKind::Framebuffer) encode_framebuffer_records(d.framebuffer, raw);
+        if (p.info.kind == RecordKind::Address) encode_address_records(d.addresses, raw);
+        benchmark::DoNotOptimize(raw.data());
+      } else {
+        compressed.resize(ZSTD_compressBound(p.raw.size()));
+        const std::size_t bytes =
+            ZSTD_compressCCtx(cctx, compressed.data(), compressed.size(), p.raw.data(), p.raw.size(), stage);
+        benchmark::DoNotOptimize(compressed.data());
+        stored += bytes;
+      }
+      records += p.info.records;
+    }
+  }
+  ZSTD_freeCCtx(cctx);
+  state.SetItemsProcessed(static_cast<std::int64_t>(records));
+  if (stage != 0) state.counters["bytes_per_record"] = double(stored) / double(std::max<std::uint64_t>(1, records));
+  state.SetLabel(stage == 0 ? "column encoding only" : "zstd only, level " + std::to_string(stage));
+}
+BENCHMARK(BM_TraceWriteStages_File)->ArgName("stage")->Arg(0)->Arg(1)->Arg(3)->Unit(benchmark::kMillisecond);
+
 // Bytes of raw records compressed again by an experiment, with the records they hold.
 struct Recompressed {
   std::vector<char> compressed;

@@ -1,9 +1,12 @@
 #include "traces/chunk_codec.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 
 #include "core/function_clones.h"
+#include "traces/append_bytes.h"
+#include "traces/column_encoder.h"
 #include "traces/texel_lanes.h"
 
 namespace rastrace {
@@ -23,125 +26,8 @@ const char* to_string(RecordKind kind) {
 
 namespace {
 
-template <typename T>
-void put(std::string& out, T value) {
-  char bytes[sizeof(T)];
-  std::memcpy(bytes, &value, sizeof(T));
-  out.append(bytes, sizeof(T));
-}
 
-std::uint64_t zigzag(std::uint64_t delta) {  // delta is a two's complement difference
-  return (delta << 1) ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(delta) >> 63);
-}
 std::uint64_t unzigzag(std::uint64_t z) { return (z >> 1) ^ (~(z & 1) + 1); }
-
-constexpr std::uint8_t kEscapedBytes = 0x81;  // column mode: 1-byte deltas, 0xFF escapes to 8 bytes
-
-constexpr std::uint8_t kRuns = 0x82;  // column mode: runs of equal values, each with its length
-constexpr std::uint64_t kLongestRun = 0xFF;  // a longer run is stored as several, with zero deltas
-constexpr std::uint64_t kShortestAverageRun = 4;
-
-// Whether record i starts a new run: its zig-zag delta z from record i - 1 is not 0, or the run
-// so far (`length` records) is as long as one run can be.
-inline bool starts_run(std::uint64_t z, std::uint64_t length) { return z != 0 || length == kLongestRun; }
-
-// One zig-zag delta of modes 0x81 and 0x82: a byte, or 0xFF and the delta's 8 bytes at `exceptions`.
-inline void put_escapable(char*& bytes, char*& exceptions, std::uint64_t z) {
-  if (z < 0xFF) {
-    *bytes++ = static_cast<char>(z);
-    return;
-  }
-  *bytes++ = static_cast<char>(0xFF);
-  std::memcpy(exceptions, &z, 8);
-  exceptions += 8;
-}
-
-// Mode kRuns: u32 runs | u32 escaped deltas | the runs' lengths (1 byte each, 1..255) | the deltas
-// between consecutive runs' values (runs - 1 bytes, zig-zag, 0xFF escapes) | the escaped deltas (8
-// bytes each). The first run's value is the column's first value. Fields that hold still for
-// several records (the mip level of a bilinear footprint, a fragment's pixel and triangle over
-// its texels) cost two bytes a run instead of one a record, and zstd has half as much to produce.
-// `runs` and `large` are put_column's counts (n >= 2).
-template <typename Get>
-void put_runs(std::string& out, std::size_t n, Get get, std::uint64_t runs, std::uint64_t large) {
-  out.push_back(static_cast<char>(kRuns));
-  put<std::uint64_t>(out, get(0));
-  put<std::uint32_t>(out, static_cast<std::uint32_t>(runs));
-  put<std::uint32_t>(out, static_cast<std::uint32_t>(large));
-  const std::size_t start = out.size();
-  out.resize(start + runs + (runs - 1) + 8 * large);
-  char* lengths = out.data() + start;
-  char* deltas = lengths + runs;
-  char* exceptions = deltas + (runs - 1);
-  std::uint64_t length = 1;
-  for (std::size_t i = 1; i < n; ++i) {
-    const std::uint64_t z = zigzag(get(i) - get(i - 1));
-    if (!starts_run(z, length)) {
-      ++length;
-      continue;
-    }
-    *lengths++ = static_cast<char>(length);
-    put_escapable(deltas, exceptions, z);
-    length = 1;
-  }
-  *lengths = static_cast<char>(length);
-}
-
-// Encodes one field of every record: get(i) is the field's value in record i. The column uses the
-// cheapest of: fixed-width deltas (0, 1, 2, 4 or 8 bytes), 1-byte deltas where the rare large
-// jump (a new texture row, a far vertex) escapes to an 8-byte delta stored after the bytes, or
-// runs of equal values (trace version 4 on).
-template <typename Get>
-void put_column(std::string& out, std::size_t n, Get get) {
-  // One pass counts for every mode: the widest delta and the escapes of the delta modes, and the
-  // runs (longer ones split) with their escaped deltas.
-  std::uint64_t widest = 0, large = 0, runs = 1, runs_large = 0, length = 1;
-  for (std::size_t i = 1; i < n; ++i) {
-    const std::uint64_t z = zigzag(get(i) - get(i - 1));
-    widest |= z;
-    large += z >= 0xFF;
-    if (starts_run(z, length)) {
-      ++runs;
-      runs_large += z >= 0xFF;
-      length = 1;
-    } else {
-      ++length;
-    }
-  }
-  const std::uint8_t width = widest == 0               ? 0
-                             : widest < 0x100          ? 1
-                             : widest < 0x10000        ? 2
-                             : widest < 0x100000000ull ? 4
-                                                       : 8;
-  const std::uint64_t deltas = n ? n - 1 : 0;
-  const bool escaped = width > 1 && deltas + 4 + 8 * large < deltas * width;
-  // Runs only where they average 4 records or more: shorter ones save zstd little and cost the
-  // decoder a run's overhead every record or two.
-  const std::uint64_t plain = escaped ? deltas + 4 + 8 * large : deltas * width;
-  if (width != 0 && runs * kShortestAverageRun <= n && 8 + 2 * runs - 1 + 8 * runs_large < plain) {
-    put_runs(out, n, get, runs, runs_large);
-    return;
-  }
-  out.push_back(static_cast<char>(escaped ? kEscapedBytes : width));
-  put<std::uint64_t>(out, n ? get(0) : 0);
-  if (width == 0) return;
-  if (escaped) {
-    put<std::uint32_t>(out, static_cast<std::uint32_t>(large));
-    const std::size_t start = out.size();
-    out.resize(start + deltas + 8 * large);
-    char* bytes = out.data() + start;
-    char* exceptions = bytes + deltas;
-    for (std::size_t i = 1; i < n; ++i) put_escapable(bytes, exceptions, zigzag(get(i) - get(i - 1)));
-    return;
-  }
-  const std::size_t start = out.size();
-  out.resize(start + deltas * width);
-  char* p = out.data() + start;
-  for (std::size_t i = 1; i < n; ++i, p += width) {
-    const std::uint64_t z = zigzag(get(i) - get(i - 1));
-    std::memcpy(p, &z, width);  // little endian: the low bytes
-  }
-}
 
 struct Cursor {
   const std::uint8_t* p;
@@ -532,47 +418,96 @@ void decode_texel_blocks(Column* col, int decoded, bool details, TexelAccess* ou
 
 }  // namespace
 
-void encode_vertex_records(const DrawInfo& draw, std::span<const VertexFetch> f, std::string& raw) {
+namespace {
+// Fields of every record, gathered into lanes for the column encoder (column_encoder.h), one lane
+// per field, in one pass over the records. The lanes are in `storage`, overwritten by the next
+// gather.
+template <typename Record, typename... Field>
+std::array<std::span<const std::uint32_t>, sizeof...(Field)> gather(std::vector<std::uint32_t>& storage,
+                                                                    std::span<const Record> records, Field... field) {
+  constexpr std::size_t kLanes = sizeof...(Field);
+  const std::size_t n = records.size();
+  storage.resize(kLanes * n);
+  std::uint32_t* const lanes = storage.data();
+  for (std::size_t i = 0; i < n; ++i) {
+    std::size_t lane = 0;
+    ((lanes[lane++ * n + i] = field(records[i])), ...);
+  }
+  std::array<std::span<const std::uint32_t>, kLanes> spans;
+  for (std::size_t lane = 0; lane < kLanes; ++lane) spans[lane] = {lanes + lane * n, n};
+  return spans;
+}
+}  // namespace
+
+void encode_vertex_records(const DrawInfo& draw, std::span<const VertexFetch> f, std::string& raw,
+                           ColumnScratch& scratch) {
   raw.clear();
-  put<std::uint32_t>(raw, draw.draw);
+  append_bytes<std::uint32_t>(raw, draw.draw);
   const bool strip = draw.type == PrimitiveType::TriangleStrip;
   const bool restarts = strip && draw.restart_index.has_value();
-  put<std::uint8_t>(raw, static_cast<std::uint8_t>(static_cast<std::uint8_t>(draw.type) |
+  append_bytes<std::uint8_t>(raw, static_cast<std::uint8_t>(static_cast<std::uint8_t>(draw.type) |
                                                    (strip && !restarts ? kStripWithoutRestart : 0)));
-  put<std::uint32_t>(raw, restarts ? *draw.restart_index : kStripRestart);
-  put_column(raw, f.size(), [&](std::size_t i) { return std::uint64_t{f[i].vertex}; });
+  append_bytes<std::uint32_t>(raw, restarts ? *draw.restart_index : kStripRestart);
+  put_column(raw, gather(scratch.lanes, f, [](const VertexFetch& r) { return r.vertex; })[0], scratch);
   const std::size_t start = raw.size();
   raw.resize(start + (f.size() + 7) / 8, 0);
-  for (std::size_t i = 0; i < f.size(); ++i)
-    if (f[i].primitive_start) raw[start + i / 8] = static_cast<char>(raw[start + i / 8] | (1 << (i % 8)));
+  char* bitmap = raw.data() + start;
+  for (std::size_t i = 0; i < f.size(); ++i) bitmap[i / 8] = static_cast<char>(bitmap[i / 8] | (f[i].primitive_start << (i % 8)));
 }
 
-void encode_texel_records(std::span<const TexelAccess> t, std::string& raw) {
+void encode_texel_records(std::span<const TexelAccess> t, std::string& raw, ColumnScratch& scratch) {
   raw.clear();
-  const std::size_t n = t.size();
-  put_column(raw, n, [&](std::size_t i) { return std::uint64_t{t[i].texture}; });
-  put_column(raw, n, [&](std::size_t i) { return std::uint64_t{t[i].level}; });
-  put_column(raw, n, [&](std::size_t i) { return std::uint64_t{t[i].x}; });
-  put_column(raw, n, [&](std::size_t i) { return std::uint64_t{t[i].y}; });
-  put_column(raw, n, [&](std::size_t i) { return std::uint64_t{t[i].pixel_x}; });
-  put_column(raw, n, [&](std::size_t i) { return std::uint64_t{t[i].pixel_y}; });
-  put_column(raw, n, [&](std::size_t i) { return std::uint64_t{t[i].triangle}; });
+  const auto lanes = gather(
+      scratch.lanes, t, [](const TexelAccess& r) { return r.texture; }, [](const TexelAccess& r) { return std::uint32_t{r.level}; },
+      [](const TexelAccess& r) { return r.x; }, [](const TexelAccess& r) { return r.y; },
+      [](const TexelAccess& r) { return std::uint32_t{r.pixel_x}; },
+      [](const TexelAccess& r) { return std::uint32_t{r.pixel_y}; }, [](const TexelAccess& r) { return r.triangle; });
+  for (const std::span<const std::uint32_t> lane : lanes) put_column(raw, lane, scratch);
 }
 
-void encode_address_records(std::span<const AddressAccess> a, std::string& raw) {
+void encode_texel_records(const TexelColumns& texels, std::string& raw, ColumnScratch& scratch) {
   raw.clear();
-  put_column(raw, a.size(), [&](std::size_t i) { return a[i].address; });
-  put_column(raw, a.size(), [&](std::size_t i) { return std::uint64_t{a[i].label}; });
+  for (std::size_t k = 0; k < TexelColumns::kFields; ++k) put_column(raw, texels.field(k), scratch);
 }
 
-void encode_framebuffer_records(std::span<const FramebufferAccess> f, std::string& raw) {
+void encode_address_records(std::span<const AddressAccess> a, std::string& raw, ColumnScratch& scratch) {
   raw.clear();
-  const std::size_t n = f.size();
-  put_column(raw, n, [&](std::size_t i) { return std::uint64_t{f[i].x}; });
-  put_column(raw, n, [&](std::size_t i) { return std::uint64_t{f[i].y}; });
-  put_column(raw, n, [&](std::size_t i) { return std::uint64_t{static_cast<std::uint8_t>(f[i].op)}; });
-  put_column(raw, n, [&](std::size_t i) { return std::uint64_t{f[i].mask}; });
-  put_column(raw, n, [&](std::size_t i) { return std::uint64_t{f[i].triangle}; });
+  scratch.wide_lane.resize(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) scratch.wide_lane[i] = a[i].address;
+  put_column(raw, scratch.wide_lane, scratch);
+  put_column(raw, gather(scratch.lanes, a, [](const AddressAccess& r) { return std::uint32_t{r.label}; })[0], scratch);
+}
+
+void encode_framebuffer_records(std::span<const FramebufferAccess> f, std::string& raw,
+                                ColumnScratch& scratch) {
+  raw.clear();
+  const auto lanes = gather(
+      scratch.lanes, f, [](const FramebufferAccess& r) { return std::uint32_t{r.x}; },
+      [](const FramebufferAccess& r) { return std::uint32_t{r.y}; },
+      [](const FramebufferAccess& r) { return std::uint32_t{static_cast<std::uint8_t>(r.op)}; },
+      [](const FramebufferAccess& r) { return std::uint32_t{r.mask}; },
+      [](const FramebufferAccess& r) { return r.triangle; });
+  for (const std::span<const std::uint32_t> lane : lanes) put_column(raw, lane, scratch);
+}
+
+namespace {
+ColumnScratch& thread_scratch() {
+  thread_local ColumnScratch scratch;
+  return scratch;
+}
+}  // namespace
+
+void encode_vertex_records(const DrawInfo& draw, std::span<const VertexFetch> fetches, std::string& raw) {
+  encode_vertex_records(draw, fetches, raw, thread_scratch());
+}
+void encode_texel_records(std::span<const TexelAccess> texels, std::string& raw) {
+  encode_texel_records(texels, raw, thread_scratch());
+}
+void encode_address_records(std::span<const AddressAccess> addresses, std::string& raw) {
+  encode_address_records(addresses, raw, thread_scratch());
+}
+void encode_framebuffer_records(std::span<const FramebufferAccess> accesses, std::string& raw) {
+  encode_framebuffer_records(accesses, raw, thread_scratch());
 }
 
 std::string decode_vertex_records(std::span<const std::uint8_t> raw, std::uint32_t n, DrawInfo& draw,

@@ -19,7 +19,9 @@
 #include <string>
 #include <vector>
 
+#include "traces/column_encoder.h"
 #include "traces/events.h"
+#include "traces/texel_columns.h"
 
 namespace rastrace {
 
@@ -27,10 +29,19 @@ enum class RecordKind : std::uint8_t { Vertex = 1, Texel = 2, Address = 3, Frame
 inline constexpr std::uint8_t kStripWithoutRestart = 0x80;
 const char* to_string(RecordKind kind);
 
+// Encoders replace `raw` with the chunk's record bytes. `scratch` is working memory a caller
+// encoding chunk after chunk keeps (column_encoder.h); the calls without it use the thread's own.
+void encode_vertex_records(const DrawInfo& draw, std::span<const VertexFetch> fetches, std::string& raw,
+                           ColumnScratch& scratch);
+void encode_texel_records(std::span<const TexelAccess> texels, std::string& raw, ColumnScratch& scratch);
+void encode_texel_records(const TexelColumns& texels, std::string& raw, ColumnScratch& scratch);
+void encode_address_records(std::span<const AddressAccess> addresses, std::string& raw, ColumnScratch& scratch);
+// Columns x, y, operation, mask, triangle.
+void encode_framebuffer_records(std::span<const FramebufferAccess> accesses, std::string& raw,
+                                ColumnScratch& scratch);
 void encode_vertex_records(const DrawInfo& draw, std::span<const VertexFetch> fetches, std::string& raw);
 void encode_texel_records(std::span<const TexelAccess> texels, std::string& raw);
 void encode_address_records(std::span<const AddressAccess> addresses, std::string& raw);
-// Columns x, y, operation, mask, triangle.
 void encode_framebuffer_records(std::span<const FramebufferAccess> accesses, std::string& raw);
 
 // Decoders append nothing: they resize `out` to `records`. They return an empty string on

@@ -14,6 +14,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "traces/append_bytes.h"
 #include "traces/crc32c.h"
 
 #ifndef RASTRACE_VERSION
@@ -21,15 +22,6 @@
 #endif
 
 namespace rastrace {
-
-namespace {
-template <typename T>
-void put(std::string& out, T value) {
-  char bytes[sizeof(T)];
-  std::memcpy(bytes, &value, sizeof(T));
-  out.append(bytes, sizeof(T));
-}
-}  // namespace
 
 // A full chunk on its way to the file: its records of one kind (the other vectors are empty),
 // then its bytes as they go into the file.
@@ -42,7 +34,7 @@ struct TraceWriter::Chunk {
   std::uint64_t sequence = 0;  // submission order, which is the file's order
   DrawInfo draw;
   std::vector<VertexFetch> vertices;
-  std::vector<TexelAccess> texels;
+  TexelColumns texels;
   std::vector<AddressAccess> addresses;
   std::vector<FramebufferAccess> framebuffer;
   std::string header, compressed;
@@ -60,8 +52,56 @@ struct Compressor {
   Compressor& operator=(const Compressor&) = delete;
   ZSTD_CCtx* cctx;
   std::string raw;
+  ColumnScratch scratch;
 };
 }  // namespace
+
+// What a writer leaves to the next one in the process: compressors (zstd context, encoding
+// buffers) and chunks with their record vectors, all allocated and their pages touched. A
+// process writing trace after trace (a file per frame, per ordering, per configuration of a
+// sweep) then allocates them once instead of faulting in some megabytes of fresh pages for every
+// file. Bounded: what a writer with the most automatic threads keeps in flight. Never destroyed,
+// so that a writer outliving static destruction still finds it.
+class TraceWriter::KeptResources {
+ public:
+  static KeptResources& get() {
+    static KeptResources* kept = new KeptResources;
+    return *kept;
+  }
+  std::unique_ptr<Compressor> compressor() {
+    {
+      const std::lock_guard lock(mutex_);
+      if (!compressors_.empty()) {
+        std::unique_ptr<Compressor> kept = std::move(compressors_.back());
+        compressors_.pop_back();
+        return kept;
+      }
+    }
+    return std::make_unique<Compressor>();
+  }
+  void keep(std::unique_ptr<Compressor> compressor) {
+    const std::lock_guard lock(mutex_);
+    if (compressors_.size() < kMostThreads) compressors_.push_back(std::move(compressor));
+  }
+  std::optional<Chunk> chunk() {
+    const std::lock_guard lock(mutex_);
+    if (chunks_.empty()) return std::nullopt;
+    std::optional<Chunk> kept(std::move(chunks_.back()));
+    chunks_.pop_back();
+    return kept;
+  }
+  void keep(std::vector<Chunk>& chunks) {
+    const std::lock_guard lock(mutex_);
+    for (Chunk& chunk : chunks)
+      if (chunks_.size() < chunks_in_flight(kMostThreads)) chunks_.push_back(std::move(chunk));
+    chunks.clear();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::unique_ptr<Compressor>> compressors_;
+  std::vector<Chunk> chunks_;
+};
 
 // Chunks flow: submit() queues them; compression threads take them in order, encode and compress
 // each independently (a chunk's bytes do not depend on the thread or on the chunks around it);
@@ -72,7 +112,10 @@ struct TraceWriter::State {
   State(const std::string& file_path, int level, unsigned compression_threads)
       : file(file_path), path(file_path), zstd_level(level), threads(compression_threads),
         limit(TraceWriter::chunks_in_flight(compression_threads)), done(limit) {}
-  ~State() { stop(); }
+  ~State() {
+    stop();
+    KeptResources::get().keep(spare);
+  }
   void write(const void* data, std::size_t size) {
     file.stream().write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
     if (!file.stream()) throw_in_file(path, "write failed (disk full?)");
@@ -82,16 +125,16 @@ struct TraceWriter::State {
     std::string& raw = compressor.raw;
     switch (chunk.kind) {
       case RecordKind::Vertex:
-        encode_vertex_records(chunk.draw, chunk.vertices, raw);
+        encode_vertex_records(chunk.draw, chunk.vertices, raw, compressor.scratch);
         break;
       case RecordKind::Texel:
-        encode_texel_records(chunk.texels, raw);
+        encode_texel_records(chunk.texels, raw, compressor.scratch);
         break;
       case RecordKind::Address:
-        encode_address_records(chunk.addresses, raw);
+        encode_address_records(chunk.addresses, raw, compressor.scratch);
         break;
       case RecordKind::Framebuffer:
-        encode_framebuffer_records(chunk.framebuffer, raw);
+        encode_framebuffer_records(chunk.framebuffer, raw, compressor.scratch);
         break;
     }
     const std::size_t bound = ZSTD_compressBound(raw.size());
@@ -102,16 +145,16 @@ struct TraceWriter::State {
     chunk.stored = stored;
     std::string& header = chunk.header;
     header.clear();
-    put<std::uint32_t>(header, kChunkTag);
-    put<std::uint8_t>(header, static_cast<std::uint8_t>(chunk.kind));
-    put<std::uint8_t>(header, chunk.flags);
-    put<std::uint16_t>(header, chunk.frame);
-    put<std::uint32_t>(header, chunk.records);
-    put<std::uint32_t>(header, static_cast<std::uint32_t>(stored));
-    put<std::uint32_t>(header, static_cast<std::uint32_t>(raw.size()));
-    put<std::uint64_t>(header, chunk.first_record);
+    append_bytes<std::uint32_t>(header, kChunkTag);
+    append_bytes<std::uint8_t>(header, static_cast<std::uint8_t>(chunk.kind));
+    append_bytes<std::uint8_t>(header, chunk.flags);
+    append_bytes<std::uint16_t>(header, chunk.frame);
+    append_bytes<std::uint32_t>(header, chunk.records);
+    append_bytes<std::uint32_t>(header, static_cast<std::uint32_t>(stored));
+    append_bytes<std::uint32_t>(header, static_cast<std::uint32_t>(raw.size()));
+    append_bytes<std::uint64_t>(header, chunk.first_record);
     const std::uint32_t crc = crc32c(chunk.compressed.data(), stored, crc32c(header.data(), header.size()));
-    put<std::uint32_t>(header, crc);
+    append_bytes<std::uint32_t>(header, crc);
   }
   // The ordered stage's work on one chunk.
   void write_chunk(const Chunk& chunk) {
@@ -126,14 +169,17 @@ struct TraceWriter::State {
       {
         std::unique_lock lock(mutex);
         ready.wait(lock, [this] { return stopping || !queue.empty(); });
-        if (queue.empty()) return;
+        if (queue.empty()) {
+          if (compressor) KeptResources::get().keep(std::move(compressor));
+          return;
+        }
         chunk = std::move(queue.front());
         queue.pop_front();
       }
       std::exception_ptr failure;
       try {
         if (!failed()) {
-          if (!compressor) compressor = std::make_unique<Compressor>();
+          if (!compressor) compressor = KeptResources::get().compressor();
           compress(chunk, *compressor);
         }
       } catch (...) {
@@ -167,7 +213,7 @@ struct TraceWriter::State {
         failure = std::current_exception();
       }
       chunk.vertices.clear();
-      chunk.texels.clear();
+      chunk.texels.size = 0;
       chunk.addresses.clear();
       chunk.framebuffer.clear();
       lock.lock();
@@ -218,35 +264,61 @@ TraceWriter::TraceWriter(const std::string& path, TraceMetadata metadata, TraceW
     : options_(options) {
   if (options_.chunk_records == 0 || options_.chunk_records > kMaxChunkRecords)
     throw InputError("trace chunk size " + std::to_string(options_.chunk_records) + ": expected 1..1048576 records");
-  // Beyond a few threads the renderer, filling chunks on one thread, is the bound.
-  constexpr unsigned kMostAutomaticThreads = 8;
   const unsigned threads = options_.compression_threads
                                ? options_.compression_threads
-                               : std::clamp(std::thread::hardware_concurrency(), 1u, kMostAutomaticThreads);
+                               : std::clamp(std::thread::hardware_concurrency(), 1u, kMostThreads);
   state_ = std::make_unique<State>(path, options_.zstd_level, threads);
   if (!state_->file.stream()) throw_in_file(path, "cannot open for writing");
   if (metadata.tool_version.empty()) metadata.tool_version = RASTRACE_VERSION;
   const std::string json = metadata_to_json(metadata);
   std::string header(kTraceMagic, 8);
-  put<std::uint32_t>(header, kTraceVersion);
-  put<std::uint32_t>(header, static_cast<std::uint32_t>(json.size()));
+  append_bytes<std::uint32_t>(header, kTraceVersion);
+  append_bytes<std::uint32_t>(header, static_cast<std::uint32_t>(json.size()));
   header += json;
-  put<std::uint32_t>(header, crc32c(json.data(), json.size()));
+  append_bytes<std::uint32_t>(header, crc32c(json.data(), json.size()));
   state_->write(header.data(), header.size());
+  // The open chunks start in memory an earlier writer kept, where there is some.
+  Chunk kept = take_spare();
+  std::swap(kept.vertices, vertices_);
+  std::swap(kept.texels, texels_);
+  std::swap(kept.framebuffer, framebuffer_);
+  std::swap(kept.addresses, addresses_);
+  vertices_.clear();
+  framebuffer_.clear();
+  addresses_.clear();
   vertices_.reserve(options_.chunk_records);
+  texels_.reset(options_.chunk_records);
   for (unsigned t = 0; t < threads; ++t) state_->pool.emplace_back([state = state_.get()] { state->run(); });
 }
 
-TraceWriter::~TraceWriter() = default;
+TraceWriter::~TraceWriter() {
+  state_.reset();  // the threads end, the spare chunks are kept
+  // The vectors being filled are kept too, in chunks of their own.
+  std::vector<Chunk> open(1);
+  std::swap(open[0].vertices, vertices_);
+  std::swap(open[0].texels, texels_);
+  std::swap(open[0].addresses, addresses_);
+  std::swap(open[0].framebuffer, framebuffer_);
+  open[0].vertices.clear();
+  open[0].texels.size = 0;
+  open[0].addresses.clear();
+  open[0].framebuffer.clear();
+  KeptResources::get().keep(open);
+}
 
 std::uint64_t TraceWriter::bytes_written() const { return state_->offset.load(); }
 
 TraceWriter::Chunk TraceWriter::take_spare() {
-  const std::lock_guard lock(state_->mutex);
-  if (state_->spare.empty()) return Chunk{};
-  Chunk chunk = std::move(state_->spare.back());
-  state_->spare.pop_back();
-  return chunk;
+  {
+    const std::lock_guard lock(state_->mutex);
+    if (!state_->spare.empty()) {
+      Chunk chunk = std::move(state_->spare.back());
+      state_->spare.pop_back();
+      return chunk;
+    }
+  }
+  if (std::optional<Chunk> kept = KeptResources::get().chunk()) return std::move(*kept);
+  return Chunk{};
 }
 
 void TraceWriter::submit(Chunk& chunk, RecordKind kind, std::uint8_t flags, std::uint32_t records) {
@@ -285,10 +357,11 @@ void TraceWriter::flush_vertices(bool ends_draw) {
 }
 
 void TraceWriter::flush_texels() {
-  if (texels_.empty()) return;
-  const auto records = static_cast<std::uint32_t>(texels_.size());
+  if (texels_.size == 0) return;
+  const auto records = static_cast<std::uint32_t>(texels_.size);
   Chunk chunk = take_spare();
   std::swap(chunk.texels, texels_);
+  texels_.reset(options_.chunk_records);
   submit(chunk, RecordKind::Texel, 0, records);
 }
 
@@ -305,6 +378,7 @@ void TraceWriter::flush_framebuffer() {
   const auto records = static_cast<std::uint32_t>(framebuffer_.size());
   Chunk chunk = take_spare();
   std::swap(chunk.framebuffer, framebuffer_);
+  framebuffer_.reserve(options_.chunk_records);
   submit(chunk, RecordKind::Framebuffer, 0, records);
 }
 
@@ -357,7 +431,12 @@ void append_in_chunks(std::vector<Record>& pending, std::span<const Record> reco
 
 void TraceWriter::texel_accesses(std::span<const TexelAccess> accesses) {
   if (finished_) throw std::logic_error("TraceWriter: texel_accesses after finish");
-  append_in_chunks(texels_, accesses, options_.chunk_records, [this] { flush_texels(); });
+  while (!accesses.empty()) {
+    const std::size_t take = std::min(texels_.capacity - texels_.size, accesses.size());
+    texels_.append(accesses.first(take));
+    accesses = accesses.subspan(take);
+    if (texels_.size == texels_.capacity) flush_texels();
+  }
 }
 
 void TraceWriter::address_accesses(std::span<const AddressAccess> accesses) {
@@ -384,22 +463,22 @@ void TraceWriter::finish() {
   state.stop();
   if (state.error) std::rethrow_exception(state.error);
   std::string index;
-  put<std::uint32_t>(index, kIndexTag);
-  put<std::uint32_t>(index, 0);
-  put<std::uint64_t>(index, state.index.size());
+  append_bytes<std::uint32_t>(index, kIndexTag);
+  append_bytes<std::uint32_t>(index, 0);
+  append_bytes<std::uint64_t>(index, state.index.size());
   for (const ChunkInfo& c : state.index) {
-    put<std::uint64_t>(index, c.offset);
-    put<std::uint64_t>(index, c.first_record);
-    put<std::uint32_t>(index, c.records);
-    put<std::uint8_t>(index, static_cast<std::uint8_t>(c.kind));
-    put<std::uint16_t>(index, c.frame);
+    append_bytes<std::uint64_t>(index, c.offset);
+    append_bytes<std::uint64_t>(index, c.first_record);
+    append_bytes<std::uint32_t>(index, c.records);
+    append_bytes<std::uint8_t>(index, static_cast<std::uint8_t>(c.kind));
+    append_bytes<std::uint16_t>(index, c.frame);
     index.append(1, '\0');
   }
   const std::uint64_t index_offset = state.offset.load();
   std::string footer;
-  put<std::uint64_t>(footer, index_offset);
-  put<std::uint32_t>(footer, crc32c(index.data(), index.size()));
-  put<std::uint32_t>(footer, 0);
+  append_bytes<std::uint64_t>(footer, index_offset);
+  append_bytes<std::uint32_t>(footer, crc32c(index.data(), index.size()));
+  append_bytes<std::uint32_t>(footer, 0);
   footer.append(kTraceEndMagic, 8);
   state.write(index.data(), index.size());
   state.write(footer.data(), footer.size());

@@ -27,6 +27,7 @@
 
 #include "traces/events.h"
 #include "traces/sink.h"
+#include "traces/texel_columns.h"
 #include "traces/trace_format.h"
 #include "traces/trace_metadata.h"
 
@@ -61,6 +62,9 @@ class TraceWriter : public EventSink {
   std::uint64_t records(RecordKind kind) const { return counts_[static_cast<int>(kind)]; }
   // Bytes written so far (the file size once finished).
   std::uint64_t bytes_written() const;
+  // Compression threads when there is one per core: beyond a few, the renderer, filling chunks on
+  // one thread, is the bound.
+  static constexpr unsigned kMostThreads = 8;
   // Full chunks that may be between filled and written before submitting one waits.
   static constexpr std::size_t chunks_in_flight(unsigned compression_threads) {
     return 2 * std::size_t{compression_threads} + 2;
@@ -77,6 +81,7 @@ class TraceWriter : public EventSink {
   Chunk take_spare();
 
   struct State;
+  class KeptResources;
   std::unique_ptr<State> state_;
   TraceWriterOptions options_;
   std::uint64_t counts_[5] = {0, 0, 0, 0, 0};
@@ -87,7 +92,7 @@ class TraceWriter : public EventSink {
   bool draw_started_ = false;
   DrawInfo draw_{};
   std::vector<VertexFetch> vertices_;
-  std::vector<TexelAccess> texels_;
+  TexelColumns texels_;
   std::vector<AddressAccess> addresses_;
   std::vector<FramebufferAccess> framebuffer_;
 };

@@ -1,0 +1,48 @@
+// Texel records held as the trace encoder reads them: one lane per field (texture, level, x, y,
+// pixel x, pixel y, triangle), field k of record i at lanes[k * capacity + i]. A trace writer
+// fills its open texel chunk this way as batches arrive, while each batch is still in the
+// renderer's cache, so that its compression threads read the lanes directly instead of first
+// transposing 24-byte records that have gone cold by the time they get them.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "traces/events.h"
+
+namespace rastrace {
+
+struct TexelColumns {
+  static constexpr std::size_t kFields = 7;
+  std::vector<std::uint32_t> lanes;
+  std::size_t capacity = 0;  // records the lanes hold
+  std::size_t size = 0;      // records held
+
+  // Empties the columns and gives them room for `records` (keeping the memory they have).
+  void reset(std::size_t records) {
+    capacity = records;
+    size = 0;
+    lanes.resize(kFields * records);
+  }
+  // Appends records; at most capacity - size of them.
+  void append(std::span<const TexelAccess> records) {
+    std::uint32_t* lane = lanes.data() + size;
+    const std::size_t c = capacity;
+    for (const TexelAccess& r : records) {
+      lane[0] = r.texture;
+      lane[c] = r.level;
+      lane[2 * c] = r.x;
+      lane[3 * c] = r.y;
+      lane[4 * c] = r.pixel_x;
+      lane[5 * c] = r.pixel_y;
+      lane[6 * c] = r.triangle;
+      ++lane;
+    }
+    size += records.size();
+  }
+  std::span<const std::uint32_t> field(std::size_t k) const { return {lanes.data() + k * capacity, size}; }
+};
+
+}  // namespace rastrace
