@@ -4,6 +4,10 @@
 // batches of kCapacity events, exactly as the recorders always batched. Either way the hot loop
 // stores an event and compares a count with a limit.
 //
+// A sink may also ask for its lent slots to be written with streaming stores (sink.h): a
+// recorder that can asks streaming() and reserves with reserve_streamed(), and the window fences
+// those stores before it commits, so that the sink, on whatever thread, reads the events.
+//
 // A lent span is asked for only when the first event after a flush arrives: that event is stored
 // in the window's own buffer, and moved when the span comes. A sink is thus never left holding
 // an open span between draws (a MemorySink read after flush() holds exactly its events).
@@ -12,10 +16,19 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 #include <exception>
 #include <span>
 #include <type_traits>
+
+// Streaming stores of 8 and 16 bytes (SSE2 on x86-64); elsewhere every store is an ordinary one.
+#if defined(__SSE2__) && defined(__x86_64__)
+#include <emmintrin.h>
+#define RASTRACE_STREAMING_STORES 1
+#else
+#define RASTRACE_STREAMING_STORES 0
+#endif
 
 #include "traces/sink.h"
 
@@ -48,7 +61,11 @@ class EventWindow {
  public:
   // sink may be nullptr: active() is then false and nothing may be stored.
   explicit EventWindow(EventSink* sink)
-      : sink_(sink), lends_(sink && sink->lends_storage()), out_(nullptr), limit_(lends_ ? 1 : kCapacity) {
+      : sink_(sink),
+        lends_(sink && sink->lends_storage()),
+        streams_(lends_ && sink->streams_lent_storage()),
+        out_(nullptr),
+        limit_(lends_ ? 1 : kCapacity) {
     out_ = buffer_.data();
   }
   EventWindow(const EventWindow&) = delete;
@@ -71,10 +88,17 @@ class EventWindow {
   Event* reserve(std::size_t count) {
     Event* out = out_ + size_;
     size_ += count;
-    // A lent span is memory the sink last wrote a frame ago, out of the caches: asking for its
-    // lines a little ahead of the stores keeps the hot loop from waiting on each line's miss.
-    // (Prefetching past the span's end is harmless: prefetches do not fault.)
-    __builtin_prefetch(reinterpret_cast<const char*>(out) + kPrefetchBytes, 1);
+    prefetch(out);
+    return out;
+  }
+  // Whether the slots reserve_streamed() gives are lent by a sink that wants streaming stores.
+  bool streaming() const { return streaming_; }
+  // As reserve(), for a caller that writes with streaming stores when streaming(): then without
+  // the prefetch, which would fetch the very lines those stores avoid reading.
+  Event* reserve_streamed(std::size_t count) {
+    Event* out = out_ + size_;
+    size_ += count;
+    if (!streaming_) prefetch(out);
     return out;
   }
   void stored() {
@@ -94,9 +118,7 @@ class EventWindow {
   // Hands the stored events to the sink: the rest of a batch, or a lent span's commit.
   void flush() {
     if (lent()) {
-      const std::size_t used = size_;
-      idle();
-      sink_calls::commit(*sink_, used, kind());
+      commit_lent();
     } else if (!lends_ && size_) {
       const std::size_t used = size_;
       size_ = 0;
@@ -107,11 +129,26 @@ class EventWindow {
  private:
   static constexpr std::size_t kPrefetchBytes = 1024;
   static constexpr std::type_identity<Event> kind() { return {}; }
+  // A lent span is memory the sink last wrote a frame ago, out of the caches: asking for its
+  // lines a little ahead of the stores keeps the hot loop from waiting on each line's miss.
+  // (Prefetching past the span's end is harmless: prefetches do not fault.)
+  static void prefetch(const Event* out) { __builtin_prefetch(reinterpret_cast<const char*>(out) + kPrefetchBytes, 1); }
   bool lent() const { return out_ != buffer_.data(); }
   void idle() {
     out_ = buffer_.data();
     size_ = 0;
     limit_ = 1;
+    streaming_ = false;
+  }
+  void commit_lent() {
+    const std::size_t used = size_;
+    idle();
+#if RASTRACE_STREAMING_STORES
+    // Streaming stores are weakly ordered: without the fence the sink's reader could see the
+    // commit before the events.
+    if (streams_) _mm_sfence();
+#endif
+    sink_calls::commit(*sink_, used, kind());
   }
   void overflow() {
     if (!lends_) {
@@ -123,8 +160,7 @@ class EventWindow {
     // Idle, with the first events since a flush in buffer_; or a full lent span to commit.
     std::size_t pending = size_;
     if (lent()) {
-      idle();
-      sink_calls::commit(*sink_, pending, kind());
+      commit_lent();
       pending = 0;
     }
     const std::span<Event> span = sink_calls::lend(*sink_, kCapacity + kSlack, kind());
@@ -132,10 +168,16 @@ class EventWindow {
     out_ = span.data();
     size_ = pending;
     limit_ = kCapacity;
+    // Streaming stores take 8 and 16 bytes: spans of events that are not all 8-byte aligned are
+    // written with ordinary stores.
+    streaming_ = RASTRACE_STREAMING_STORES && streams_ && sizeof(Event) % 8 == 0 &&
+                 reinterpret_cast<std::uintptr_t>(span.data()) % 8 == 0;
   }
 
   EventSink* sink_;
   bool lends_;
+  bool streams_;
+  bool streaming_ = false;  // streams_, and a span is lent
   Event* out_;
   std::size_t size_ = 0;
   std::size_t limit_;

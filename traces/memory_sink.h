@@ -2,7 +2,8 @@
 // The event vectors are backed by huge pages once they pass 2 MiB (core/huge_page_allocator.h):
 // a frame's tens of megabytes of events then cost a few dozen page faults, not thousands. Keep
 // one sink across frames and clear() it: the capacity stays, and later frames fault not at all.
-// It lends storage (sink.h): the recorders write events straight into these vectors.
+// It lends storage (sink.h): the recorders write events straight into these vectors, with
+// streaming stores where they can.
 #pragma once
 
 #include <vector>
@@ -22,6 +23,7 @@ class MemorySink final : public EventSink {
   bool wants_framebuffer_events() const override { return true; }
 
   bool lends_storage() const override { return true; }
+  bool streams_lent_storage() const override { return true; }
   std::span<VertexFetch> vertex_slots(std::size_t count) override;
   void commit_vertices(std::size_t used) override;
   std::span<TexelAccess> texel_slots(std::size_t count) override;

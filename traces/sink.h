@@ -48,6 +48,12 @@ class EventSink {
   // Lending (see the top of this file). The defaults lend nothing; a sink overriding
   // lends_storage() to return true overrides all six.
   virtual bool lends_storage() const { return false; }
+  // A lending sink whose events are read, if at all, after the frame, when they are long out of
+  // the caches (a frame's tens of megabytes): the recorders then write lent slots with streaming
+  // (non-temporal) stores, which skip reading each line before overwriting it and leave the
+  // caches to the renderer. A sink that reads its slots back soon (a tile buffer copied out right
+  // after) says false, the default: there cached stores are cheaper than reading from memory.
+  virtual bool streams_lent_storage() const { return false; }
   virtual std::span<VertexFetch> vertex_slots(std::size_t /*count*/) { return {}; }
   virtual void commit_vertices(std::size_t /*used*/) {}
   virtual std::span<TexelAccess> texel_slots(std::size_t /*count*/) { return {}; }
