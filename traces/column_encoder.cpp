@@ -4,12 +4,13 @@
 #include <array>
 #include <atomic>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #if defined(__x86_64__)
 #include <immintrin.h>
 #endif
-
 
 #include "core/function_clones.h"
 #include "traces/append_bytes.h"
@@ -21,7 +22,6 @@ namespace {
 // Runs pay only where they average this many records or more: shorter ones save zstd little and
 // cost the decoder a run's overhead every record or two.
 constexpr std::uint64_t kShortestAverageRun = 4;
-
 
 inline std::uint64_t zigzag(std::uint64_t delta) {  // delta is a two's complement difference
   return (delta << 1) ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(delta) >> 63);
@@ -152,14 +152,6 @@ inline void put_escapable(char*& bytes, char*& exceptions, std::uint64_t z) {
   exceptions += 8;
 }
 
-// Mode kRuns: u32 runs | u32 escaped deltas | the runs' lengths (1 byte each, 1..255) | the deltas
-// between consecutive runs' values (runs - 1 bytes, zig-zag, 0xFF escapes) | the escaped deltas (8
-// bytes each). The first run's value is the column's first value; a stretch of equal values
-// longer than a run continues in runs whose delta is 0. Fields that hold still for several
-// records (the mip level of a bilinear footprint, a fragment's pixel and triangle over its
-// texels) cost two bytes a run instead of one a record, and zstd has half as much to produce.
-// The runs are found in one pass into scratch space, since whether they pay depends on how many
-// there are; `large` is the column's count of escaped deltas.
 // Lists in change[0..) the records i >= 1 whose value differs from record i - 1's, in order,
 // without a branch: in the columns that take runs a change comes every few records, at no
 // pattern a branch predictor could learn. Returns how many. AVX2: eight records at a time, the
@@ -223,6 +215,14 @@ std::size_t list_changes(const std::uint64_t* v, std::size_t n, std::uint32_t* c
   return count;
 }
 
+// Mode kRuns: u32 runs | u32 escaped deltas | the runs' lengths (1 byte each, 1..255) | the deltas
+// between consecutive runs' values (runs - 1 bytes, zig-zag, 0xFF escapes) | the escaped deltas (8
+// bytes each). The first run's value is the column's first value; a stretch of equal values
+// longer than a run continues in runs whose delta is 0. Fields that hold still for several
+// records (the mip level of a bilinear footprint, a fragment's pixel and triangle over its
+// texels) cost two bytes a run instead of one a record, and zstd has half as much to produce.
+// The runs are found in one pass into scratch space, since whether they pay depends on how many
+// there are; `large` is the column's count of escaped deltas.
 // find_runs() returns the count of runs and leaves them in `bytes` (ColumnScratch::runs); the
 // changes are listed in `changes` first.
 template <typename T>
@@ -320,11 +320,22 @@ void put_column_of(std::string& out, const T* v, std::size_t n, ColumnScratch& s
 
 }  // namespace
 
+namespace {
+// Positions, counts and the mode headers' fields are 32-bit.
+void check_records(std::size_t n) {
+  if (n > kMostColumnRecords)
+    throw std::length_error("a trace column of " + std::to_string(n) + " records (at most " +
+                            std::to_string(kMostColumnRecords) + ")");
+}
+}  // namespace
+
 void put_column(std::string& out, std::span<const std::uint32_t> values, ColumnScratch& scratch) {
+  check_records(values.size());
   put_column_of(out, values.data(), values.size(), scratch);
 }
 
 void put_column(std::string& out, std::span<const std::uint64_t> values, ColumnScratch& scratch) {
+  check_records(values.size());
   put_column_of(out, values.data(), values.size(), scratch);
 }
 

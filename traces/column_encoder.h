@@ -6,6 +6,7 @@
 // per pass: a trace file's writer encodes every event of a frame, and this is half its work.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -28,7 +29,11 @@ struct ColumnScratch {
   std::vector<char> runs;              // a column's run lengths at [0, n), deltas at [n, 2n), escapes after
 };
 
-// Appends the column of `values` (record i's field is values[i]) to `out`.
+// Records a column may hold (a chunk holds at most kMaxChunkRecords).
+inline constexpr std::size_t kMostColumnRecords = 0xFFFFFFFFu - 8;
+
+// Appends the column of `values` (record i's field is values[i]) to `out`; throws
+// std::length_error past kMostColumnRecords.
 void put_column(std::string& out, std::span<const std::uint32_t> values, ColumnScratch& scratch);
 void put_column(std::string& out, std::span<const std::uint64_t> values, ColumnScratch& scratch);
 

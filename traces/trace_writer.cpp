@@ -60,8 +60,9 @@ struct Compressor {
 // buffers) and chunks with their record vectors, all allocated and their pages touched. A
 // process writing trace after trace (a file per frame, per ordering, per configuration of a
 // sweep) then allocates them once instead of faulting in some megabytes of fresh pages for every
-// file. Bounded: what a writer with the most automatic threads keeps in flight. Never destroyed,
-// so that a writer outliving static destruction still finds it.
+// file. Bounded: at most one compressor per thread of the most automatic threads, and the chunks
+// the last writer had in flight and open. Never destroyed, so that a writer outliving static
+// destruction still finds it.
 class TraceWriter::KeptResources {
  public:
   static KeptResources& get() {
@@ -90,10 +91,11 @@ class TraceWriter::KeptResources {
     chunks_.pop_back();
     return kept;
   }
-  void keep(std::vector<Chunk>& chunks) {
+  // Keeps chunks while fewer than `most` are kept.
+  void keep(std::vector<Chunk>& chunks, std::size_t most) {
     const std::lock_guard lock(mutex_);
     for (Chunk& chunk : chunks)
-      if (chunks_.size() < chunks_in_flight(kMostThreads)) chunks_.push_back(std::move(chunk));
+      if (chunks_.size() < most) chunks_.push_back(std::move(chunk));
     chunks.clear();
   }
 
@@ -114,7 +116,7 @@ struct TraceWriter::State {
         limit(TraceWriter::chunks_in_flight(compression_threads)), done(limit) {}
   ~State() {
     stop();
-    KeptResources::get().keep(spare);
+    KeptResources::get().keep(spare, limit);
   }
   void write(const void* data, std::size_t size) {
     file.stream().write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
@@ -292,8 +294,9 @@ TraceWriter::TraceWriter(const std::string& path, TraceMetadata metadata, TraceW
 }
 
 TraceWriter::~TraceWriter() {
-  state_.reset();  // the threads end, the spare chunks are kept
-  // The vectors being filled are kept too, in chunks of their own.
+  const std::size_t most_kept = state_->limit + 1;  // the chunks in flight, and one of open vectors
+  state_.reset();                                   // the threads end, the spare chunks are kept
+  // The vectors being filled are kept too, in a chunk of their own.
   std::vector<Chunk> open(1);
   std::swap(open[0].vertices, vertices_);
   std::swap(open[0].texels, texels_);
@@ -303,7 +306,7 @@ TraceWriter::~TraceWriter() {
   open[0].texels.size = 0;
   open[0].addresses.clear();
   open[0].framebuffer.clear();
-  KeptResources::get().keep(open);
+  KeptResources::get().keep(open, most_kept);
 }
 
 std::uint64_t TraceWriter::bytes_written() const { return state_->offset.load(); }

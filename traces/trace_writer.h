@@ -6,7 +6,10 @@
 // those a writer with one thread, or none, would write. Memory is bounded: one open chunk per
 // record kind, at most chunks_in_flight(threads) = 2 x threads + 2 full chunks between filled and
 // written (submitting waits for room), plus 24 bytes of index per chunk, so frames of any length
-// stream to disk. The file appears only when finish() succeeds (core/atomic_file.h); a writer
+// stream to disk. When a writer ends, its compressors (one per thread, at most kMostThreads) and
+// chunks (at most chunks_in_flight + 1) are kept for the next writer in the process, so that a
+// program writing a trace per frame does not allocate them afresh for each. The file appears
+// only when finish() succeeds (core/atomic_file.h); a writer
 // destroyed without finish() leaves nothing behind. The first error (a failed write, disk full)
 // is thrown from the next submission of a chunk or from finish().
 //
