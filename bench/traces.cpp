@@ -171,6 +171,20 @@ std::vector<StoredChunk> read_stored_chunks(const char* path) {
   return chunks;
 }
 
+// Decodes a stored chunk's raw payload into `out`: what the reader's column stage does.
+std::string decode_payload(const StoredChunk& p, DecodedChunk& out) {
+  switch (p.info.kind) {
+    case RecordKind::Vertex:
+      return decode_vertex_records(p.raw, p.info.records, out.draw, out.vertices);
+    case RecordKind::Texel:
+      return decode_texel_records(p.raw, p.info.records, out.texels);
+    case RecordKind::Framebuffer:
+      return decode_framebuffer_records(p.raw, p.info.records, out.framebuffer);
+    default:
+      return decode_address_records(p.raw, p.info.records, out.addresses);
+  }
+}
+
 void BM_TraceChunkStages_File(benchmark::State& state) {
   const char* path = std::getenv("RASTRACE_BENCH_TRACE");
   if (!path) {
@@ -187,14 +201,8 @@ void BM_TraceChunkStages_File(benchmark::State& state) {
       if (state.range(0) == 0) {
         raw.resize(p.raw.size());
         benchmark::DoNotOptimize(ZSTD_decompressDCtx(dctx, raw.data(), raw.size(), p.stored.data(), p.stored.size()));
-      } else if (p.info.kind == RecordKind::Vertex) {
-        benchmark::DoNotOptimize(decode_vertex_records(p.raw, p.info.records, out.draw, out.vertices));
-      } else if (p.info.kind == RecordKind::Texel) {
-        benchmark::DoNotOptimize(decode_texel_records(p.raw, p.info.records, out.texels));
-      } else if (p.info.kind == RecordKind::Framebuffer) {
-        benchmark::DoNotOptimize(decode_framebuffer_records(p.raw, p.info.records, out.framebuffer));
       } else {
-        benchmark::DoNotOptimize(decode_address_records(p.raw, p.info.records, out.addresses));
+        benchmark::DoNotOptimize(decode_payload(p, out));
       }
       records += p.info.records;
     }
@@ -216,14 +224,7 @@ void BM_TraceWriteStages_File(benchmark::State& state) {
   }
   const std::vector<StoredChunk> payloads = read_stored_chunks(path);
   std::vector<DecodedChunk> decoded(payloads.size());
-  for (std::size_t i = 0; i < payloads.size(); ++i) {
-    const StoredChunk& p = payloads[i];
-    DecodedChunk& d = decoded[i];
-    if (p.info.kind == RecordKind::Vertex) decode_vertex_records(p.raw, p.info.records, d.draw, d.vertices);
-    if (p.info.kind == RecordKind::Texel) decode_texel_records(p.raw, p.info.records, d.texels);
-    if (p.info.kind == RecordKind::Framebuffer) decode_framebuffer_records(p.raw, p.info.records, d.framebuffer);
-    if (p.info.kind == RecordKind::Address) decode_address_records(p.raw, p.info.records, d.addresses);
-  }
+  for (std::size_t i = 0; i < payloads.size(); ++i) decode_payload(payloads[i], decoded[i]);
   const int stage = static_cast<int>(state.range(0));
   ZSTD_CCtx* cctx = ZSTD_createCCtx();
   std::string raw;

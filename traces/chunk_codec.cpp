@@ -26,7 +26,6 @@ const char* to_string(RecordKind kind) {
 
 namespace {
 
-
 std::uint64_t unzigzag(std::uint64_t z) { return (z >> 1) ^ (~(z & 1) + 1); }
 
 struct Cursor {
@@ -456,13 +455,13 @@ void encode_vertex_records(const DrawInfo& draw, std::span<const VertexFetch> f,
 }
 
 void encode_texel_records(std::span<const TexelAccess> t, std::string& raw, ColumnScratch& scratch) {
-  raw.clear();
-  const auto lanes = gather(
-      scratch.lanes, t, [](const TexelAccess& r) { return r.texture; }, [](const TexelAccess& r) { return std::uint32_t{r.level}; },
-      [](const TexelAccess& r) { return r.x; }, [](const TexelAccess& r) { return r.y; },
-      [](const TexelAccess& r) { return std::uint32_t{r.pixel_x}; },
-      [](const TexelAccess& r) { return std::uint32_t{r.pixel_y}; }, [](const TexelAccess& r) { return r.triangle; });
-  for (const std::span<const std::uint32_t> lane : lanes) put_column(raw, lane, scratch);
+  // The records as the writer's open chunk holds them, in the scratch's lane storage (borrowed).
+  TexelColumns columns;
+  std::swap(columns.lanes, scratch.lanes);
+  columns.reset(t.size());
+  columns.append(t);
+  encode_texel_records(columns, raw, scratch);
+  std::swap(columns.lanes, scratch.lanes);
 }
 
 void encode_texel_records(const TexelColumns& texels, std::string& raw, ColumnScratch& scratch) {

@@ -39,6 +39,13 @@ struct TraceWriter::Chunk {
   std::vector<FramebufferAccess> framebuffer;
   std::string header, compressed;
   std::size_t stored = 0;  // bytes of compressed that are the chunk's payload
+  // Empties the records, keeping their memory for the next chunk.
+  void clear_records() {
+    vertices.clear();
+    texels.size = 0;
+    addresses.clear();
+    framebuffer.clear();
+  }
 };
 
 namespace {
@@ -214,10 +221,7 @@ struct TraceWriter::State {
       } catch (...) {
         failure = std::current_exception();
       }
-      chunk.vertices.clear();
-      chunk.texels.size = 0;
-      chunk.addresses.clear();
-      chunk.framebuffer.clear();
+      chunk.clear_records();
       lock.lock();
       if (failure && !error) error = failure;
       spare.push_back(std::move(chunk));
@@ -279,15 +283,10 @@ TraceWriter::TraceWriter(const std::string& path, TraceMetadata metadata, TraceW
   header += json;
   append_bytes<std::uint32_t>(header, crc32c(json.data(), json.size()));
   state_->write(header.data(), header.size());
-  // The open chunks start in memory an earlier writer kept, where there is some.
+  // The open chunks start in memory an earlier writer kept, where there is some (kept chunks are
+  // empty).
   Chunk kept = take_spare();
-  std::swap(kept.vertices, vertices_);
-  std::swap(kept.texels, texels_);
-  std::swap(kept.framebuffer, framebuffer_);
-  std::swap(kept.addresses, addresses_);
-  vertices_.clear();
-  framebuffer_.clear();
-  addresses_.clear();
+  exchange_open_records(kept);
   vertices_.reserve(options_.chunk_records);
   texels_.reset(options_.chunk_records);
   for (unsigned t = 0; t < threads; ++t) state_->pool.emplace_back([state = state_.get()] { state->run(); });
@@ -298,15 +297,16 @@ TraceWriter::~TraceWriter() {
   state_.reset();                                   // the threads end, the spare chunks are kept
   // The vectors being filled are kept too, in a chunk of their own.
   std::vector<Chunk> open(1);
-  std::swap(open[0].vertices, vertices_);
-  std::swap(open[0].texels, texels_);
-  std::swap(open[0].addresses, addresses_);
-  std::swap(open[0].framebuffer, framebuffer_);
-  open[0].vertices.clear();
-  open[0].texels.size = 0;
-  open[0].addresses.clear();
-  open[0].framebuffer.clear();
+  exchange_open_records(open[0]);
+  open[0].clear_records();
   KeptResources::get().keep(open, most_kept);
+}
+
+void TraceWriter::exchange_open_records(Chunk& chunk) {
+  std::swap(chunk.vertices, vertices_);
+  std::swap(chunk.texels, texels_);
+  std::swap(chunk.addresses, addresses_);
+  std::swap(chunk.framebuffer, framebuffer_);
 }
 
 std::uint64_t TraceWriter::bytes_written() const { return state_->offset.load(); }

@@ -82,6 +82,8 @@ class TraceWriter : public EventSink {
   // Hands a chunk to the compression threads (waiting while the most chunks allowed are in flight).
   void submit(Chunk& chunk, RecordKind kind, std::uint8_t flags, std::uint32_t records);
   Chunk take_spare();
+  // Swaps the records being filled (every kind's) with `chunk`'s.
+  void exchange_open_records(Chunk& chunk);
 
   struct State;
   class KeptResources;
