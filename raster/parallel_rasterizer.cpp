@@ -314,8 +314,9 @@ void ParallelRasterizer::rasterize_in_tile(Worker& worker, const Binned& triangl
   QuadStage stage{framebuffer_, options_, hiz_.get(), worker.texels, worker.framebuffer_events, worker.stats};
   const Traversal traversal = options_.traversal;
   const unsigned hilbert_bits = traversal_hilbert_bits(framebuffer_.width(), framebuffer_.height());
+  const QuadCoefficients coefficients(triangle.setup);
   for_each_quad<kDebug>(triangle.setup, traversal, clip, [&](int qx, int qy, const simd::i64x4* e) {
-    stage.quad<kTextured, kDebug>(triangle.setup, triangle.state, qx, qy, e);
+    stage.quad<kTextured, kDebug>(triangle.setup, coefficients, triangle.state, qx, qy, e);
     if (!recording_) return;
     const auto texel_end = static_cast<std::uint32_t>(worker.texels.reads() - texel_base);
     const auto events_end = static_cast<std::uint32_t>(worker.framebuffer_events.records() - event_base);

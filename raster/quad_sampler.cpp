@@ -1,8 +1,5 @@
 #include "raster/quad_sampler.h"
 
-#include <algorithm>
-
-#include "raster/quad_filter.h"
 
 namespace rastrace {
 
@@ -37,73 +34,17 @@ inline f32x4 fetch(const Image& image, std::int32_t x, std::int32_t y) {
   return simd::bytes_to_float(image.texel(x, y)) * splat(1.0f / 255.0f);
 }
 
-f32x4 safe_coordinates(f32x4 s) { return simd::clamp(simd::finite_or_zero(s), -kCoordinateLimit, kCoordinateLimit); }
-
 }  // namespace
 
-void sample_quad(const Texture& texture, const SamplerState& state, f32x4 s, f32x4 t, float lambda, unsigned pixels,
-                 int qx, int qy, TexelRecorder& recorder, TexelSite site, f32x4 rgba[4]) {
-  s = safe_coordinates(s);
-  t = safe_coordinates(t);
-  const LevelPlan plan = plan_levels(texture, state, lambda);
-  const Image& first = texture.levels[plan.first];
-  if (plan.filter == TextureFilter::Linear) {
-    QuadFilterInput in;
-    in.levels[0] = {first.rgba.data(), first.width, first.height};
-    if (plan.blend) {
-      const Image& second = texture.levels[plan.first + 1];
-      in.levels[1] = {second.rgba.data(), second.width, second.height};
-    }
-    in.repeat_s = state.wrap_s == TextureWrap::Repeat;
-    in.repeat_t = state.wrap_t == TextureWrap::Repeat;
-    in.blend = plan.blend;
-    in.fraction = plan.fraction;
-    // The sampled pixels in order; a blend of one or two of them is filtered in their lanes alone.
-    int sampled[4], count = 0;
-    for (int i = 0; i < 4; ++i)
-      if (pixels >> i & 1u) sampled[count++] = i;
-    if (count == 0) return;
-    in.two_pixels = plan.blend && count <= 2;
-    if (in.two_pixels) {
-      for (int j = 0; j < 2; ++j) {
-        const int i = sampled[std::min(j, count - 1)];
-        in.s[j] = s[i];
-        in.t[j] = t[i];
-      }
-    } else {
-      in.s = s;
-      in.t = t;
-    }
-    QuadFilterOutput out;
-    renderer_quad_filter()(in, out);
-    const int second_level_lane = in.two_pixels ? 2 : 4;
-    for (int j = 0; j < count; ++j) {
-      const int i = sampled[j], lane = in.two_pixels ? j : i;
-      site.pixel_x = static_cast<std::uint16_t>(qx + (i & 1));
-      site.pixel_y = static_cast<std::uint16_t>(qy + (i >> 1));
-      recorder.record_footprint(site, plan.first, out.x0[lane], out.x1[lane], out.y0[lane], out.y1[lane]);
-      if (plan.blend) {
-        const int second = lane + second_level_lane;
-        recorder.record_footprint(site, plan.first + 1, out.x0[second], out.x1[second], out.y0[second],
-                                  out.y1[second]);
-      }
-    }
-    if (in.two_pixels) {
-      for (int j = 0; j < count; ++j)
-        for (int c = 0; c < 4; ++c) rgba[c][sampled[j]] = out.rgba[c][j];
-    } else {
-      for (int c = 0; c < 4; ++c) rgba[c] = out.rgba[c];
-    }
-    return;
-  }
-  // NEAREST within one level (NEAREST, NEAREST_MIPMAP_NEAREST, or a NEAREST magnification).
-  const NearestTexels texels = nearest_texels(first, state, s, t);
+void sample_quad_nearest(const Image& level, unsigned level_index, const SamplerState& state, f32x4 s, f32x4 t,
+                         unsigned pixels, int qx, int qy, TexelRecorder& recorder, TexelSite site, f32x4 rgba[4]) {
+  const NearestTexels texels = nearest_texels(level, state, s, t);
   for (int i = 0; i < 4; ++i) {
     if (!(pixels >> i & 1u)) continue;
     site.pixel_x = static_cast<std::uint16_t>(qx + (i & 1));
     site.pixel_y = static_cast<std::uint16_t>(qy + (i >> 1));
-    recorder.record(site, plan.first, texels.x[i], texels.y[i]);
-    const f32x4 colour = fetch(first, texels.x[i], texels.y[i]);
+    recorder.record(site, level_index, texels.x[i], texels.y[i]);
+    const f32x4 colour = fetch(level, texels.x[i], texels.y[i]);
     for (int c = 0; c < 4; ++c) rgba[c][i] = colour[c];
   }
 }

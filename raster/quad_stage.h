@@ -54,6 +54,21 @@ class HierarchicalZ {
   std::size_t columns_ = 0;
 };
 
+// A triangle's interpolation coefficients broadcast to every lane, once per triangle: each
+// quad's attributes are then vector operations on them, where broadcasting the 25 scalars per
+// quad cost two instructions each.
+struct QuadCoefficients {
+  explicit QuadCoefficients(const TriangleSetup& s) : inv_area(simd::splat(s.inv_area)) {
+    for (int j = 0; j < kRasterAttributes; ++j) {
+      base[j] = simd::splat(s.base[j]);
+      d1[j] = simd::splat(s.d1[j]);
+      d2[j] = simd::splat(s.d2[j]);
+    }
+  }
+  simd::f32x4 inv_area;
+  simd::f32x4 base[kRasterAttributes], d1[kRasterAttributes], d2[kRasterAttributes];
+};
+
 // One thread's quad stage: its recorders and statistics, the shared framebuffer and hierarchical Z.
 struct QuadStage {
   Framebuffer& framebuffer;
@@ -64,12 +79,13 @@ struct QuadStage {
   RasterStats& stats;
 
   template <bool kTextured, bool kDebug>
-  void quad(const TriangleSetup& s, const TriangleState& state, int qx, int qy, const simd::i64x4* pe);
+  void quad(const TriangleSetup& s, const QuadCoefficients& k, const TriangleState& state, int qx, int qy,
+            const simd::i64x4* pe);
 };
 
 template <bool kTextured, bool kDebug>
-inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, int qx, int qy,
-                            const simd::i64x4* pe) {
+inline void QuadStage::quad(const TriangleSetup& s, const QuadCoefficients& k, const TriangleState& state, int qx,
+                            int qy, const simd::i64x4* pe) {
   using simd::f32x4;
   using simd::splat;
   const int width = framebuffer.width(), height = framebuffer.height();
@@ -106,9 +122,9 @@ inline void QuadStage::quad(const TriangleSetup& s, const TriangleState& state, 
   stats.fragments += covered;
 
   // Barycentric weights of vertices 1 and 2 at the four centres (helper pixels included).
-  const f32x4 l1 = simd::to_float(pe[1]) * splat(s.inv_area);
-  const f32x4 l2 = simd::to_float(pe[2]) * splat(s.inv_area);
-  auto attribute = [&](int j) { return splat(s.base[j]) + l1 * splat(s.d1[j]) + l2 * splat(s.d2[j]); };
+  const f32x4 l1 = simd::to_float(pe[1]) * k.inv_area;
+  const f32x4 l2 = simd::to_float(pe[2]) * k.inv_area;
+  auto attribute = [&](int j) { return k.base[j] + l1 * k.d1[j] + l2 * k.d2[j]; };
   auto pixel = [&](int i) {
     return static_cast<std::size_t>(qy + (i >> 1)) * width + static_cast<std::size_t>(qx + (i & 1));
   };

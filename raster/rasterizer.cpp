@@ -98,9 +98,10 @@ template <bool kTextured, bool kDebug>
 void Rasterizer::traverse(const TriangleSetup& s, const TriangleState& state) {
   QuadStage stage{framebuffer_, options_, hiz_.get(), recorder_, framebuffer_recorder_, stats_};
   const PixelRect image{0, 0, framebuffer_.width() - 1, framebuffer_.height() - 1};
+  const QuadCoefficients coefficients(s);
   for_each_quad<kDebug>(
       s, options_.traversal, image,
-      [&](int qx, int qy, const simd::i64x4* e) { stage.quad<kTextured, kDebug>(s, state, qx, qy, e); },
+      [&](int qx, int qy, const simd::i64x4* e) { stage.quad<kTextured, kDebug>(s, coefficients, state, qx, qy, e); },
       hilbert_bits_);
 }
 

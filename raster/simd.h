@@ -30,10 +30,10 @@ inline unsigned non_negative_mask(const i64x4& v) {
 
 // The number of bits set in a 4-bit lane mask, from a table: baseline x86-64 has no popcnt
 // instruction, and std::popcount there is a call into libgcc.
-inline unsigned lanes_set(unsigned mask) {
-  constexpr unsigned char kCounts[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
-  return kCounts[mask & 15u];
-}
+// The table has static storage: a local constexpr array indexed at run time was copied onto the
+// stack at every call.
+inline constexpr unsigned char kLanesSet[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+inline unsigned lanes_set(unsigned mask) { return kLanesSet[mask & 15u]; }
 
 // Bit i set where lane i of a comparison's result is true (-1).
 inline unsigned lanes_true(i32x4 comparison) {
