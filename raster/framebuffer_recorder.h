@@ -23,16 +23,10 @@ class FramebufferRecorder {
   FramebufferRecorder& operator=(const FramebufferRecorder&) = delete;
 
   bool active() const { return sink_ != nullptr; }
+  // The test inline, the store apart: the quad stage records three times per quad, and as one
+  // function too large to inline it cost a call each time even with no sink.
   void record(FramebufferOp op, int quad_x, int quad_y, unsigned mask, std::uint32_t triangle) {
-    if (!sink_) return;
-    ++records_;
-    FramebufferAccess& event = *window_.reserve(1);
-    event.x = static_cast<std::uint16_t>(quad_x);
-    event.y = static_cast<std::uint16_t>(quad_y);
-    event.op = op;
-    event.mask = static_cast<std::uint8_t>(mask);
-    event.triangle = triangle;
-    window_.stored();
+    if (sink_) store(op, quad_x, quad_y, mask, triangle);
   }
   // Records a run of events as record() would one by one: same batches, same calls to the sink.
   void append(std::span<const FramebufferAccess> events) {
@@ -45,6 +39,17 @@ class FramebufferRecorder {
   void flush() { window_.flush(); }
 
  private:
+  void store(FramebufferOp op, int quad_x, int quad_y, unsigned mask, std::uint32_t triangle) {
+    ++records_;
+    FramebufferAccess& event = *window_.reserve(1);
+    event.x = static_cast<std::uint16_t>(quad_x);
+    event.y = static_cast<std::uint16_t>(quad_y);
+    event.op = op;
+    event.mask = static_cast<std::uint8_t>(mask);
+    event.triangle = triangle;
+    window_.stored();
+  }
+
   EventSink* sink_;
   std::uint64_t records_ = 0;
   EventWindow<FramebufferAccess, kCapacity> window_;

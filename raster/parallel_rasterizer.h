@@ -38,7 +38,7 @@
 #include "core/huge_page_allocator.h"
 #include "raster/framebuffer.h"
 #include "raster/framebuffer_recorder.h"
-#include "raster/quad_stage.h"
+#include "raster/quad_loop.h"
 #include "raster/rasterizer.h"
 #include "raster/texel_recorder.h"
 #include "raster/worker_pool.h"

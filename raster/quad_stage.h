@@ -84,7 +84,7 @@ struct QuadStage {
 };
 
 template <bool kTextured, bool kDebug>
-inline void QuadStage::quad(const TriangleSetup& s, const QuadCoefficients& k, const TriangleState& state, int qx,
+[[gnu::always_inline]] inline void QuadStage::quad(const TriangleSetup& s, const QuadCoefficients& k, const TriangleState& state, int qx,
                             int qy, const simd::i64x4* pe) {
   using simd::f32x4;
   using simd::splat;
@@ -147,7 +147,7 @@ inline void QuadStage::quad(const TriangleSetup& s, const QuadCoefficients& k, c
   // the right or bottom border (odd sizes) pixel by pixel.
   const bool whole = qx + 1 < width && qy + 1 < height;
   float* const depth_rows[2] = {depth + pixel(0), depth + pixel(2)};
-  auto depth_test = [&] {
+  auto depth_test = [&]() __attribute__((always_inline)) {
     unsigned pass = 0;
     if (whole) {
       const f32x4 stored{depth_rows[0][0], depth_rows[0][1], depth_rows[1][0], depth_rows[1][1]};

@@ -2,7 +2,7 @@
 
 #include "core/enum_names.h"
 #include "raster/parallel_rasterizer.h"
-#include "raster/quad_stage.h"
+#include "raster/quad_loop.h"
 
 namespace rastrace {
 
@@ -98,11 +98,8 @@ template <bool kTextured, bool kDebug>
 void Rasterizer::traverse(const TriangleSetup& s, const TriangleState& state) {
   QuadStage stage{framebuffer_, options_, hiz_.get(), recorder_, framebuffer_recorder_, stats_};
   const PixelRect image{0, 0, framebuffer_.width() - 1, framebuffer_.height() - 1};
-  const QuadCoefficients coefficients(s);
-  for_each_quad<kDebug>(
-      s, options_.traversal, image,
-      [&](int qx, int qy, const simd::i64x4* e) { stage.quad<kTextured, kDebug>(s, coefficients, state, qx, qy, e); },
-      hilbert_bits_);
+  visit_quads<kTextured, kDebug>(stage, s, state, options_.traversal, image, hilbert_bits_,
+                                 [](int, int) __attribute__((always_inline)) {});
 }
 
 }  // namespace rastrace

@@ -69,7 +69,7 @@ inline std::uint32_t quad_order_key(Traversal traversal, int qx, int qy, unsigne
 // tiles that one edge excludes entirely, unless kVisitAll (the debug planes look at every quad).
 // Hilbert8 visits the same tiles as Tiled8 along the screen's curve of order `hilbert_bits`.
 template <bool kVisitAll, typename Visit>
-void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect& clip, Visit&& visit,
+[[gnu::always_inline]] inline void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect& clip, Visit&& visit,
                    unsigned hilbert_bits = 0) {
   using simd::i64x4;
   const int x_begin = std::max(s.x0, clip.x0), y_begin = std::max(s.y0, clip.y0);
@@ -89,7 +89,8 @@ void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect&
   for (int k = 0; k < 3; ++k)
     quad_reach[k] = std::max<std::int64_t>(0, s.step_x[k]) + std::max<std::int64_t>(0, s.step_y[k]) + s.bias[k];
   // The quads of the rectangle whose top-left quad has edge functions `first`, row-major.
-  const auto quads_of_rectangle = [&](int x0, int y0, int x1, int y1, const std::int64_t* first) {
+  const auto quads_of_rectangle = [&](int x0, int y0, int x1, int y1, const std::int64_t* first)
+                                      __attribute__((always_inline)) {
     i64x4 row[3];
     for (int k = 0; k < 3; ++k) row[k] = pixel_offsets[k] + first[k];
     const std::int64_t columns = (x1 - x0) / 2 + 1;
@@ -137,7 +138,7 @@ void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect&
     tile_max[k] =
         std::max<std::int64_t>(0, s.step_x[k]) * (kTile - 1) + std::max<std::int64_t>(0, s.step_y[k]) * (kTile - 1);
   // The quads of one tile inside the clip; `tile` holds the edge functions at its top-left pixel.
-  const auto quads_of_tile = [&](int tx, int ty, const std::int64_t* tile) {
+  const auto quads_of_tile = [&](int tx, int ty, const std::int64_t* tile) __attribute__((always_inline)) {
     quads_of_rectangle(tx, ty, std::min(tx + kTile - 2, x_end), std::min(ty + kTile - 2, y_end), tile);
   };
   if (traversal == Traversal::Hilbert8) {

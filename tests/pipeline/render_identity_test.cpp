@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "pipeline/render_scene.h"
+#include "raster/quad_loop.h"
 #include "tests/reference/cross_check_scenes.h"
 #include "scenes/builtin_scenes.h"
 #include "tests/support/temp_dir.h"
@@ -226,6 +227,19 @@ TEST(RenderIdentity, OneThreadEqualsThePinnedImagesEventsAndTraceFilesToTheBit) 
 TEST(RenderIdentity, TwoThreadsEqualThePinnedImagesEventsAndTraceFilesToTheBit) { expect_pinned_digests(2); }
 
 TEST(RenderIdentity, FourThreadsEqualThePinnedImagesEventsAndTraceFilesToTheBit) { expect_pinned_digests(4); }
+
+// The quad loop's baseline copy (raster/quad_loop.h), in the same process as the x86-64-v4 copy
+// the tests above ran where the processor has it: the two must give the same bits.
+TEST(RenderIdentity, TheBaselineQuadLoopGivesThePinnedDigestsAtOneAndTwoThreads) {
+  struct Restore {
+    bool wide = wide_quad_loop();
+    ~Restore() { use_wide_quad_loop(wide); }
+  } restore;
+  use_wide_quad_loop(false);
+  ASSERT_FALSE(wide_quad_loop());
+  expect_pinned_digests(1);
+  expect_pinned_digests(2);
+}
 
 }  // namespace
 }  // namespace rastrace

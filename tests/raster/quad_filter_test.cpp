@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "raster/quad_filter.h"
+#include "raster/quad_loop.h"
 #include "raster/sampler.h"
 
 namespace rastrace {
@@ -120,6 +121,9 @@ TEST(QuadFilter, RastraceSimdChoosesTheBaselineKernel) {
   if (forced && std::string(forced) == "sse2") {
     EXPECT_EQ(renderer_simd_level(), SimdLevel::Sse2);
     EXPECT_EQ(renderer_quad_filter(), quad_filter_kernel(SimdLevel::Sse2));
+    EXPECT_FALSE(wide_quad_loop());  // the quad loop's baseline copy too (raster/quad_loop.h)
+    use_wide_quad_loop(true);        // which a test cannot turn back on past the variable
+    EXPECT_FALSE(wide_quad_loop());
   } else {
     EXPECT_EQ(renderer_simd_level(),
               simd_level_supported(SimdLevel::Avx2) ? SimdLevel::Avx2 : SimdLevel::Sse2);
