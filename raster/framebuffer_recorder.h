@@ -25,7 +25,7 @@ class FramebufferRecorder {
   bool active() const { return sink_ != nullptr; }
   // The test inline, the store apart: the quad stage records three times per quad, and as one
   // function too large to inline it cost a call each time even with no sink.
-  void record(FramebufferOp op, int quad_x, int quad_y, unsigned mask, std::uint32_t triangle) {
+  [[gnu::always_inline]] void record(FramebufferOp op, int quad_x, int quad_y, unsigned mask, std::uint32_t triangle) {
     if (sink_) store(op, quad_x, quad_y, mask, triangle);
   }
   // Records a run of events as record() would one by one: same batches, same calls to the sink.

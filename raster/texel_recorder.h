@@ -70,7 +70,7 @@ class TexelRecorder {
   // The four texels of a bilinear footprint, (x0, y0), (x1, y0), (x0, y1), (x1, y1), with one
   // branch for the four: they are stored into the window's slack, and a full buffer hands the
   // sink exactly kCapacity events, as four record() calls would.
-  void record_footprint(const TexelSite& site, unsigned level, int x0, int x1, int y0, int y1) {
+  [[gnu::always_inline]] void record_footprint(const TexelSite& site, unsigned level, int x0, int x1, int y0, int y1) {
     reads_ += 4;
     if (!sink_) return;
     if constexpr (kWords) {
@@ -120,7 +120,7 @@ class TexelRecorder {
   // where the count allows. No path copies the words through memory: with a fallback that did,
   // the compiler kept them in an array on the stack, stored twice, and the frame was 6% slower.
   template <std::size_t kCount>
-  void store(TexelAccess* out, const std::uint64_t (&words)[kCount]) {
+  [[gnu::always_inline]] void store(TexelAccess* out, const std::uint64_t (&words)[kCount]) {
 #if RASTRACE_STREAMING_STORES
     if (window_.streaming()) {
       if (reinterpret_cast<std::uintptr_t>(out) % 16 == 0)
@@ -139,13 +139,13 @@ class TexelRecorder {
   }
 #if RASTRACE_STREAMING_STORES
   template <std::size_t kCount>
-  static __m128i pair(const std::uint64_t (&words)[kCount], std::size_t i) {
+  [[gnu::always_inline]] static __m128i pair(const std::uint64_t (&words)[kCount], std::size_t i) {
     return _mm_set_epi64x(static_cast<long long>(words[i + 1]), static_cast<long long>(words[i]));
   }
   // kAligned: the first of words[kAligned...] whose address is a multiple of 16; the window
   // streams only spans of 8-byte aligned events.
   template <std::size_t kAligned, std::size_t kCount>
-  static void stream(TexelAccess* out, const std::uint64_t (&words)[kCount]) {
+  [[gnu::always_inline]] static void stream(TexelAccess* out, const std::uint64_t (&words)[kCount]) {
     auto* to = reinterpret_cast<long long*>(out);
     if constexpr (kAligned == 1) _mm_stream_si64(to, static_cast<long long>(words[0]));
     constexpr std::size_t kEnd = kAligned + (kCount - kAligned) / 2 * 2;
