@@ -31,13 +31,35 @@ template <bool kTextured, bool kDebug, typename AfterQuad>
                                          Traversal traversal, const PixelRect& clip, unsigned hilbert_bits,
                                          AfterQuad& after_quad) {
   const QuadCoefficients coefficients(s);
+  if (kDebug || !stage.pipelined()) {
+    for_each_quad<kDebug>(
+        s, traversal, clip,
+        [&](int qx, int qy, const simd::i64x4* e) __attribute__((always_inline)) {
+          stage.quad<kTextured, kDebug>(s, coefficients, state, qx, qy, e);
+          after_quad(qx, qy);
+        },
+        hilbert_bits);
+    return;
+  }
+  // Each quad's front half runs before the back half of the quad before it (quad_stage.h); a
+  // quad that its front half finishes (no coverage) has no back half and no events, so it needs
+  // no after_quad either.
+  PendingQuad pending[2];
+  int due = -1, next = 0;  // the quad whose back half is due (-1: none), the slot for the next
+  auto finish = [&](const PendingQuad& q) __attribute__((always_inline)) {
+    stage.back<kTextured, kDebug>(coefficients, state, q);
+    after_quad(q.qx, q.qy);
+  };
   for_each_quad<kDebug>(
       s, traversal, clip,
       [&](int qx, int qy, const simd::i64x4* e) __attribute__((always_inline)) {
-        stage.quad<kTextured, kDebug>(s, coefficients, state, qx, qy, e);
-        after_quad(qx, qy);
+        if (!stage.front<kTextured, kDebug>(s, coefficients, state, qx, qy, e, pending[next])) return;
+        if (due >= 0) finish(pending[due]);
+        due = next;
+        next ^= 1;
       },
       hilbert_bits);
+  if (due >= 0) finish(pending[due]);
 }
 
 template <bool kTextured, bool kDebug, typename AfterQuad>

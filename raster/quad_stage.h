@@ -69,7 +69,30 @@ struct QuadCoefficients {
   simd::f32x4 base[kRasterAttributes], d1[kRasterAttributes], d2[kRasterAttributes];
 };
 
+// What the front half of the quad stage leaves for the back half (QuadStage::front, ::back).
+struct PendingQuad {
+  int qx = 0, qy = 0;
+  unsigned mask = 0;     // covered pixels
+  unsigned pass = 0;     // early depth test: the covered pixels that pass it
+  bool whole = false;    // the quad lies wholly inside the image
+  std::size_t tile = 0;  // its hierarchical-Z tile
+  simd::f32x4 l1, l2;    // barycentric weights of vertices 1 and 2 at the four centres
+  simd::f32x4 z, w;      // depth; 1 / q, the perspective correction
+  simd::f32x4 u, v;      // texture coordinates
+  float lambda = 0.0f;   // level of detail (textured, isotropic filter)
+};
+
 // One thread's quad stage: its recorders and statistics, the shared framebuffer and hierarchical Z.
+//
+// A quad goes through two halves. front() decides coverage, interpolates depth and texture
+// coordinates, runs the early depth test and computes the level of detail; back() records the
+// quad's events, samples the texture, runs a late depth test and writes. front() writes nothing
+// and records nothing, so the quad loop may run the front of the next quad of the same triangle
+// before the back of this one (quad_loop.h): the next quad's pixels are other pixels, and its
+// chain of dependent operations (the division by q, the square root and log2 of the level of
+// detail) overlaps this quad's texture filter. The events come out in quad()'s order.
+// Hierarchical Z is the exception: a back half may lower a tile's farthest depth, which the next
+// front half reads (pipelined() is false then).
 struct QuadStage {
   Framebuffer& framebuffer;
   const RasterOptions& options;
@@ -78,15 +101,47 @@ struct QuadStage {
   FramebufferRecorder& framebuffer_events;
   RasterStats& stats;
 
+  // front() then back() for one quad.
   template <bool kTextured, bool kDebug>
-  void quad(const TriangleSetup& s, const QuadCoefficients& k, const TriangleState& state, int qx, int qy,
-            const simd::i64x4* pe);
+  [[gnu::always_inline]] void quad(const TriangleSetup& s, const QuadCoefficients& k, const TriangleState& state,
+                                   int qx, int qy, const simd::i64x4* pe) {
+    PendingQuad q;
+    if (front<kTextured, kDebug>(s, k, state, qx, qy, pe, q)) back<kTextured, kDebug>(k, state, q);
+  }
+  // Whether the next quad's front may run before this quad's back.
+  bool pipelined() const { return hiz == nullptr; }
+  // False when the quad is done (no coverage, or rejected by hierarchical Z): back() would have
+  // nothing to record or write.
+  template <bool kTextured, bool kDebug>
+  bool front(const TriangleSetup& s, const QuadCoefficients& k, const TriangleState& state, int qx, int qy,
+             const simd::i64x4* pe, PendingQuad& q);
+  template <bool kTextured, bool kDebug>
+  void back(const QuadCoefficients& k, const TriangleState& state, const PendingQuad& q);
+
+ private:
+  std::size_t pixel(const PendingQuad& q, int i) const {
+    return static_cast<std::size_t>(q.qy + (i >> 1)) * static_cast<std::size_t>(framebuffer.width()) +
+           static_cast<std::size_t>(q.qx + (i & 1));
+  }
+  // The covered pixels of `q` that pass the depth test.
+  [[gnu::always_inline]] unsigned depth_pass(const PendingQuad& q) const {
+    const float* depth = framebuffer.depth();
+    if (q.whole) {
+      const float* const rows[2] = {depth + pixel(q, 0), depth + pixel(q, 2)};
+      const simd::f32x4 stored{rows[0][0], rows[0][1], rows[1][0], rows[1][1]};
+      return q.mask & simd::lanes_true(q.z < stored);
+    }
+    unsigned pass = 0;
+    for (int i = 0; i < 4; ++i)
+      if ((q.mask >> i & 1u) && q.z[i] < depth[pixel(q, i)]) pass |= 1u << i;
+    return pass;
+  }
 };
 
 template <bool kTextured, bool kDebug>
-[[gnu::always_inline]] inline void QuadStage::quad(const TriangleSetup& s, const QuadCoefficients& k, const TriangleState& state, int qx,
-                            int qy, const simd::i64x4* pe) {
-  using simd::f32x4;
+[[gnu::always_inline]] inline bool QuadStage::front(const TriangleSetup& s, const QuadCoefficients& k,
+                                                    const TriangleState& state, int qx, int qy, const simd::i64x4* pe,
+                                                    PendingQuad& q) {
   using simd::splat;
   const int width = framebuffer.width(), height = framebuffer.height();
   // pe[k]: edge function k at the pixels of the quad, one lane each: 0 top-left, 1 top-right,
@@ -106,116 +161,130 @@ template <bool kTextured, bool kDebug>
       if (closed && (pe[0][i] == 0 || pe[1][i] == 0 || pe[2][i] == 0)) {
         flag = 1;
       } else if (flag == 0) {
-        for (int k = 0; k < 3; ++k) {
-          const bool near = std::fabs(static_cast<double>(pe[k][i])) <= s.length[k];
-          const bool inside_others = pe[(k + 1) % 3][i] >= -static_cast<std::int64_t>(s.length[(k + 1) % 3]) &&
-                                     pe[(k + 2) % 3][i] >= -static_cast<std::int64_t>(s.length[(k + 2) % 3]);
+        for (int e = 0; e < 3; ++e) {
+          const bool near = std::fabs(static_cast<double>(pe[e][i])) <= s.length[e];
+          const bool inside_others = pe[(e + 1) % 3][i] >= -static_cast<std::int64_t>(s.length[(e + 1) % 3]) &&
+                                     pe[(e + 2) % 3][i] >= -static_cast<std::int64_t>(s.length[(e + 2) % 3]);
           if (near && inside_others) flag = 2;
         }
       }
     }
   }
-  if (!mask) return;
+  if (!mask) return false;
   ++stats.quads;
-
   const unsigned covered = simd::lanes_set(mask);
   stats.fragments += covered;
+  q.qx = qx;
+  q.qy = qy;
+  q.mask = mask;
 
   // Barycentric weights of vertices 1 and 2 at the four centres (helper pixels included).
-  const f32x4 l1 = simd::to_float(pe[1]) * k.inv_area;
-  const f32x4 l2 = simd::to_float(pe[2]) * k.inv_area;
-  auto attribute = [&](int j) { return k.base[j] + l1 * k.d1[j] + l2 * k.d2[j]; };
-  auto pixel = [&](int i) {
-    return static_cast<std::size_t>(qy + (i >> 1)) * width + static_cast<std::size_t>(qx + (i & 1));
-  };
-  float* depth = framebuffer.depth();
-  const f32x4 z = attribute(7);
+  q.l1 = simd::to_float(pe[1]) * k.inv_area;
+  q.l2 = simd::to_float(pe[2]) * k.inv_area;
+  auto attribute = [&](int j) { return k.base[j] + q.l1 * k.d1[j] + q.l2 * k.d2[j]; };
+  q.z = attribute(7);
   // Hierarchical Z: no covered fragment can pass if none is nearer than the farthest depth of
   // the quad's 8x8 tile; the quad is rejected without reading the depth buffer.
-  const std::size_t tile = hiz ? hiz->tile_of(qx, qy) : 0;
   if (hiz) {
+    q.tile = hiz->tile_of(qx, qy);
     float nearest = 2.0f;
     for (int i = 0; i < 4; ++i)
-      if (mask >> i & 1u) nearest = std::min(nearest, z[i]);
-    if (nearest >= hiz->farthest(tile)) {
+      if (mask >> i & 1u) nearest = std::min(nearest, q.z[i]);
+    if (nearest >= hiz->farthest(q.tile)) {
       ++stats.quads_rejected_hiz;
       stats.fragments_rejected_early += covered;
-      return;
+      return false;
     }
   }
   // A quad wholly inside the image reads and writes its pixels as two rows of two lanes; one on
   // the right or bottom border (odd sizes) pixel by pixel.
-  const bool whole = qx + 1 < width && qy + 1 < height;
-  float* const depth_rows[2] = {depth + pixel(0), depth + pixel(2)};
-  auto depth_test = [&]() __attribute__((always_inline)) {
-    unsigned pass = 0;
-    if (whole) {
-      const f32x4 stored{depth_rows[0][0], depth_rows[0][1], depth_rows[1][0], depth_rows[1][1]};
-      pass = mask & simd::lanes_true(z < stored);
-    } else {
-      for (int i = 0; i < 4; ++i)
-        if ((mask >> i & 1u) && z[i] < depth[pixel(i)]) pass |= 1u << i;
-    }
-    framebuffer_events.record(FramebufferOp::DepthRead, qx, qy, mask, state.triangle);
-    return pass;
-  };
+  q.whole = qx + 1 < width && qy + 1 < height;
   // Early: the test runs before shading and texturing, so rejected fragments read no texel.
-  // Late: every covered fragment is shaded and textured, then tested.
-  const bool late = options.depth_test == DepthTest::Late;
-  unsigned pass = late ? 0u : depth_test();
-  if (!late) {
-    stats.fragments_rejected_early += covered - simd::lanes_set(pass);
-    if (!pass) return;
+  // Late: every covered fragment is shaded and textured, then tested (in back()).
+  if (options.depth_test != DepthTest::Late) {
+    q.pass = depth_pass(q);
+    stats.fragments_rejected_early += covered - simd::lanes_set(q.pass);
+    if (!q.pass) return true;  // back() records the depth read
   }
-  const unsigned shade = late ? mask : pass;
-  stats.fragments_shaded += simd::lanes_set(shade);
   // Perspective correction: every attribute but q and z is interpolated divided by w.
-  const f32x4 w = splat(1.0f) / attribute(0);
-  // Channels in vectors, pixels in lanes, as the sampler returns them.
-  f32x4 shaded[4] = {attribute(3) * w, attribute(4) * w, attribute(5) * w, attribute(6) * w};
+  q.w = splat(1.0f) / attribute(0);
   if constexpr (kTextured) {
-    const f32x4 u = attribute(1) * w, v = attribute(2) * w;
+    q.u = attribute(1) * q.w;
+    q.v = attribute(2) * q.w;
+    if (options.sampler.max_anisotropy <= 1) {
+      const Image& base = state.texture->levels[0];
+      q.lambda = compute_lod(options.sampler, base.width, base.height, q.u[1] - q.u[0], q.v[1] - q.v[0],
+                             q.u[2] - q.u[0], q.v[2] - q.v[0]);
+    }
+  }
+  return true;
+}
+
+template <bool kTextured, bool kDebug>
+[[gnu::always_inline]] inline void QuadStage::back(const QuadCoefficients& k, const TriangleState& state,
+                                                   const PendingQuad& q) {
+  using simd::f32x4;
+  using simd::splat;
+  const bool late = options.depth_test == DepthTest::Late;
+  if (!late) {
+    framebuffer_events.record(FramebufferOp::DepthRead, q.qx, q.qy, q.mask, state.triangle);
+    if (!q.pass) return;
+  }
+  const unsigned shade = late ? q.mask : q.pass;
+  stats.fragments_shaded += simd::lanes_set(shade);
+  auto attribute = [&](int j) { return k.base[j] + q.l1 * k.d1[j] + q.l2 * k.d2[j]; };
+  // Channels in vectors, pixels in lanes, as the sampler returns them.
+  f32x4 shaded[4] = {attribute(3) * q.w, attribute(4) * q.w, attribute(5) * q.w, attribute(6) * q.w};
+  if constexpr (kTextured) {
     const Texture* texture = state.texture;
     stats.fragments_textured += simd::lanes_set(shade);
-    const float dsdx = u[1] - u[0], dtdx = v[1] - v[0], dsdy = u[2] - u[0], dtdy = v[2] - v[0];
     TexelSite site;
     site.texture = state.texture_id;
     site.triangle = state.triangle;
     // Lanes of pixels the sampler skips keep 1: their products are never written.
     f32x4 texel_colour[4] = {splat(1.0f), splat(1.0f), splat(1.0f), splat(1.0f)};
-    if (options.sampler.max_anisotropy > 1 && options.sampler.aniso_rule == AnisotropyRule::Probes) {
-      const ProbeFootprint footprint = probe_footprint(*texture, options.sampler, dsdx, dtdx, dsdy, dtdy);
-      sample_quad_probes(*texture, options.sampler, footprint, u, v, shade, qx, qy, texels, site, texel_colour);
-    } else if (options.sampler.max_anisotropy > 1) {
-      const EllipticalFootprint footprint = elliptical_footprint(*texture, options.sampler, dsdx, dtdx, dsdy, dtdy);
-      sample_quad_elliptical(*texture, options.sampler, footprint, u, v, shade, qx, qy, texels, site, texel_colour);
+    if (options.sampler.max_anisotropy > 1) {
+      const float dsdx = q.u[1] - q.u[0], dtdx = q.v[1] - q.v[0], dsdy = q.u[2] - q.u[0], dtdy = q.v[2] - q.v[0];
+      if (options.sampler.aniso_rule == AnisotropyRule::Probes) {
+        const ProbeFootprint footprint = probe_footprint(*texture, options.sampler, dsdx, dtdx, dsdy, dtdy);
+        sample_quad_probes(*texture, options.sampler, footprint, q.u, q.v, shade, q.qx, q.qy, texels, site,
+                           texel_colour);
+      } else {
+        const EllipticalFootprint footprint = elliptical_footprint(*texture, options.sampler, dsdx, dtdx, dsdy, dtdy);
+        sample_quad_elliptical(*texture, options.sampler, footprint, q.u, q.v, shade, q.qx, q.qy, texels, site,
+                               texel_colour);
+      }
     } else {
-      const float lambda =
-          compute_lod(options.sampler, texture->levels[0].width, texture->levels[0].height, dsdx, dtdx, dsdy, dtdy);
-      sample_quad(*texture, options.sampler, u, v, lambda, shade, qx, qy, texels, site, texel_colour);
+      sample_quad(*texture, options.sampler, q.u, q.v, q.lambda, shade, q.qx, q.qy, texels, site, texel_colour);
     }
     for (int c = 0; c < 4; ++c) shaded[c] *= texel_colour[c];
   }
-  if (late) pass = depth_test();
+  unsigned pass = q.pass;
+  if (late) {
+    pass = depth_pass(q);
+    framebuffer_events.record(FramebufferOp::DepthRead, q.qx, q.qy, q.mask, state.triangle);
+  }
   if (!pass) return;
-  framebuffer_events.record(FramebufferOp::DepthWrite, qx, qy, pass, state.triangle);
-  framebuffer_events.record(FramebufferOp::ColourWrite, qx, qy, pass, state.triangle);
+  framebuffer_events.record(FramebufferOp::DepthWrite, q.qx, q.qy, pass, state.triangle);
+  framebuffer_events.record(FramebufferOp::ColourWrite, q.qx, q.qy, pass, state.triangle);
   bool tile_maximum_written = false;
+  float* depth = framebuffer.depth();
   std::uint8_t* colour = framebuffer.colour();
   stats.fragments_passed += simd::lanes_set(pass);
   simd::i32x4 bytes[4];
   for (int c = 0; c < 4; ++c)
     bytes[c] = simd::truncate(simd::clamp(shaded[c], 0.0f, 1.0f) * splat(255.0f) + splat(0.5f));
-  if (whole && !kDebug && std::endian::native == std::endian::little) {
+  if (q.whole && !kDebug && std::endian::native == std::endian::little) {
     // The passing lanes' depths and RGBA words over the stored ones, two pixels per row.
+    float* const depth_rows[2] = {depth + pixel(q, 0), depth + pixel(q, 2)};
     const simd::i32x4 write = simd::lanes_of(pass);
     const f32x4 stored{depth_rows[0][0], depth_rows[0][1], depth_rows[1][0], depth_rows[1][1]};
-    if (hiz && (pass & simd::lanes_true(stored >= splat(hiz->farthest(tile))))) tile_maximum_written = true;
-    const f32x4 depths = write ? z : stored;
+    if (hiz && (pass & simd::lanes_true(stored >= splat(hiz->farthest(q.tile))))) tile_maximum_written = true;
+    const f32x4 depths = write ? q.z : stored;
     const simd::i32x4 mask8 = splat(0xFF);
     const simd::i32x4 words =
         (bytes[0] & mask8) | (bytes[1] & mask8) << 8 | (bytes[2] & mask8) << 16 | (bytes[3] & mask8) << 24;
-    std::uint8_t* const colour_rows[2] = {colour + pixel(0) * 4, colour + pixel(2) * 4};
+    std::uint8_t* const colour_rows[2] = {colour + pixel(q, 0) * 4, colour + pixel(q, 2) * 4};
     std::int32_t stored_pixels[4];
     for (int row = 0; row < 2; ++row) std::memcpy(stored_pixels + 2 * row, colour_rows[row], 8);
     const simd::i32x4 stored_words{stored_pixels[0], stored_pixels[1], stored_pixels[2], stored_pixels[3]};
@@ -226,19 +295,19 @@ template <bool kTextured, bool kDebug>
       depth_rows[row][1] = depths[2 * row + 1];
       std::memcpy(colour_rows[row], out_pixels + 2 * row, 8);
     }
-    if (tile_maximum_written) hiz->refresh(framebuffer, tile);
+    if (tile_maximum_written) hiz->refresh(framebuffer, q.tile);
     return;
   }
   for (int i = 0; i < 4; ++i) {
     if (!(pass >> i & 1u)) continue;
-    const std::size_t p = pixel(i);
-    if (hiz && depth[p] >= hiz->farthest(tile)) tile_maximum_written = true;
-    depth[p] = z[i];
+    const std::size_t p = pixel(q, i);
+    if (hiz && depth[p] >= hiz->farthest(q.tile)) tile_maximum_written = true;
+    depth[p] = q.z[i];
     std::uint8_t* out = colour + p * 4;
     for (int c = 0; c < 4; ++c) out[c] = static_cast<std::uint8_t>(bytes[c][i]);
     if constexpr (kDebug) ++framebuffer.write_count()[p];
   }
-  if (tile_maximum_written) hiz->refresh(framebuffer, tile);
+  if (tile_maximum_written) hiz->refresh(framebuffer, q.tile);
 }
 
 }  // namespace rastrace
