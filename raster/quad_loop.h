@@ -11,6 +11,10 @@
 // quad is inlined into each copy (always_inline); what stays a call (recording events, the
 // filter kernel, log2f) keeps its one baseline body, so no inline function of the rest of the
 // program is compiled for x86-64-v4.
+//
+// In both copies the loop runs each quad's front half before the back half of the quad before it
+// (QuadStage in quad_stage.h says why that is safe and what it gains), except under hierarchical
+// Z and with the debug planes.
 #pragma once
 
 #include "raster/quad_stage.h"
@@ -82,7 +86,8 @@ __attribute__((target("arch=x86-64-v4"))) void visit_wide(QuadStage& stage, cons
 }  // namespace quad_loop_detail
 
 // Runs `stage` on every quad of the triangle inside `clip`, in the traversal's order, calling
-// after_quad(qx, qy) after each (inlined too: pass a lambda marked always_inline).
+// after_quad(qx, qy) once a quad's events are all recorded (inlined too: pass a lambda marked
+// always_inline). Quads that cover no pixel record nothing and may get no call.
 template <bool kTextured, bool kDebug, typename AfterQuad>
 void visit_quads(QuadStage& stage, const TriangleSetup& s, const TriangleState& state, Traversal traversal,
                  const PixelRect& clip, unsigned hilbert_bits, AfterQuad&& after_quad) {
