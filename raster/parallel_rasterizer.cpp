@@ -314,15 +314,16 @@ void ParallelRasterizer::rasterize_in_tile(Worker& worker, const Binned& triangl
   QuadStage stage{framebuffer_, options_, hiz_.get(), worker.texels, worker.framebuffer_events, worker.stats};
   const Traversal traversal = options_.traversal;
   const unsigned hilbert_bits = traversal_hilbert_bits(framebuffer_.width(), framebuffer_.height());
-  visit_quads<kTextured, kDebug>(stage, triangle.setup, triangle.state, traversal, clip, hilbert_bits,
-                                 [&](int qx, int qy) __attribute__((always_inline)) {
-    if (!recording_) return;
-    const auto texel_end = static_cast<std::uint32_t>(worker.texels.reads() - texel_base);
-    const auto events_end = static_cast<std::uint32_t>(worker.framebuffer_events.records() - event_base);
-    const QuadMark* last = out.quads.empty() ? nullptr : &out.quads.back();
-    if (last ? (texel_end != last->texel_end || events_end != last->events_end) : (texel_end | events_end) != 0)
-      out.quads.push_back({quad_order_key(traversal, qx, qy, hilbert_bits), texel_end, events_end});
-  });
+  visit_quads<kTextured, kDebug>(
+      stage, triangle.setup, triangle.state, traversal, clip,
+      hilbert_bits, [&](int qx, int qy) __attribute__((always_inline)) {
+        if (!recording_) return;
+        const auto texel_end = static_cast<std::uint32_t>(worker.texels.reads() - texel_base);
+        const auto events_end = static_cast<std::uint32_t>(worker.framebuffer_events.records() - event_base);
+        const QuadMark* last = out.quads.empty() ? nullptr : &out.quads.back();
+        if (last ? (texel_end != last->texel_end || events_end != last->events_end) : (texel_end | events_end) != 0)
+          out.quads.push_back({quad_order_key(traversal, qx, qy, hilbert_bits), texel_end, events_end});
+      });
 }
 
 void ParallelRasterizer::emit_quad(const TileEvents& tile, TileCursor& cursor, const QuadMark& mark) {

@@ -1,6 +1,5 @@
 #include "raster/quad_sampler.h"
 
-
 namespace rastrace {
 
 namespace {

@@ -35,8 +35,8 @@ void sample_quad_nearest(const Image& level, unsigned level_index, const Sampler
 // events; their pixel is set per pixel. Inline: the quad stage calls it once per quad, and as a
 // call it spilled the stage's vectors around it and passed the colours back through memory.
 [[gnu::always_inline]] inline void sample_quad(const Texture& texture, const SamplerState& state, simd::f32x4 s,
-                                               simd::f32x4 t, float lambda,
-                        unsigned pixels, int qx, int qy, TexelRecorder& recorder, TexelSite site, simd::f32x4 rgba[4]) {
+                                               simd::f32x4 t, float lambda, unsigned pixels, int qx, int qy,
+                                               TexelRecorder& recorder, TexelSite site, simd::f32x4 rgba[4]) {
   using simd::f32x4;
   using simd::i32x4;
   s = simd::clamp(simd::finite_or_zero(s), -kCoordinateLimit, kCoordinateLimit);
@@ -81,8 +81,7 @@ void sample_quad_nearest(const Image& level, unsigned level_index, const Sampler
       recorder.record_footprint(site, plan.first, out.x0[lane], out.x1[lane], out.y0[lane], out.y1[lane]);
       if (plan.blend) {
         const int second = lane + second_level_lane;
-        recorder.record_footprint(site, plan.first + 1, out.x0[second], out.x1[second], out.y0[second],
-                                  out.y1[second]);
+        recorder.record_footprint(site, plan.first + 1, out.x0[second], out.x1[second], out.y0[second], out.y1[second]);
       }
     }
     if (in.two_pixels) {

@@ -6,9 +6,9 @@
 
 #include <algorithm>
 #include <bit>
-#include <cstring>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "raster/framebuffer.h"
@@ -45,7 +45,8 @@ class HierarchicalZ {
     float farthest = 0.0f;
     for (int y = tile_y * kTraversalTile; y < y1; ++y)
       for (int x = tile_x * kTraversalTile; x < x1; ++x)
-        farthest = std::max(farthest, framebuffer.depth()[static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x)]);
+        farthest =
+            std::max(farthest, framebuffer.depth()[static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x)]);
     tiles_[tile] = farthest;
   }
 

@@ -8,9 +8,10 @@ namespace rastrace {
 
 namespace {
 
-constexpr EnumName<Traversal> kTraversals[] = {
-    {Traversal::Scanline, "scanline"}, {Traversal::Tiled8, "tiled8"}, {Traversal::Tiled8, "tiled"},
-    {Traversal::Hilbert8, "hilbert"}};
+constexpr EnumName<Traversal> kTraversals[] = {{Traversal::Scanline, "scanline"},
+                                               {Traversal::Tiled8, "tiled8"},
+                                               {Traversal::Tiled8, "tiled"},
+                                               {Traversal::Hilbert8, "hilbert"}};
 
 }  // namespace
 
@@ -99,7 +100,7 @@ void Rasterizer::traverse(const TriangleSetup& s, const TriangleState& state) {
   QuadStage stage{framebuffer_, options_, hiz_.get(), recorder_, framebuffer_recorder_, stats_};
   const PixelRect image{0, 0, framebuffer_.width() - 1, framebuffer_.height() - 1};
   visit_quads<kTextured, kDebug>(stage, s, state, options_.traversal, image, hilbert_bits_,
-                                 [](int, int) __attribute__((always_inline)) {});
+                                 [](int, int) __attribute__((always_inline)){});
 }
 
 }  // namespace rastrace

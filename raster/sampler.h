@@ -70,9 +70,8 @@ const char* to_string(TextureWrap wrap);
 // lambda = log2(rho) for one 2x2 quad. Derivatives are in normalised coordinates (s, t) per pixel;
 // the level-0 size scales them to texels. Returns -inf-safe values (rho = 0 gives -128).
 // Inline, with plan_levels: the quad stage calls both once per quad.
-[[gnu::always_inline]] inline float compute_lod(const SamplerState& state, int width, int height, float dsdx, float dtdx,
-                                               float dsdy,
-                         float dtdy) {
+[[gnu::always_inline]] inline float compute_lod(const SamplerState& state, int width, int height, float dsdx,
+                                                float dtdx, float dsdy, float dtdy) {
   const float w = static_cast<float>(width), h = static_cast<float>(height);
   const float dudx = dsdx * w, dvdx = dtdx * h, dudy = dsdy * w, dvdy = dtdy * h;
   float rho;

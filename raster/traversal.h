@@ -40,9 +40,7 @@ inline constexpr int kTraversalTile = 8;  // the 8x8 tiles of Tiled8 and Hilbert
 inline constexpr int kSpanMinimumColumns = 4;
 
 // How far the bounding box's corner is aligned down (setup_triangle's `align`).
-inline int traversal_alignment(Traversal traversal) {
-  return traversal == Traversal::Scanline ? 2 : kTraversalTile;
-}
+inline int traversal_alignment(Traversal traversal) { return traversal == Traversal::Scanline ? 2 : kTraversalTile; }
 
 // The order of the Hilbert curve that covers a width x height screen with 8x8 tiles (the curve is
 // the screen's, so every triangle visits shared tiles in the same relative order).
@@ -69,8 +67,8 @@ inline std::uint32_t quad_order_key(Traversal traversal, int qx, int qy, unsigne
 // tiles that one edge excludes entirely, unless kVisitAll (the debug planes look at every quad).
 // Hilbert8 visits the same tiles as Tiled8 along the screen's curve of order `hilbert_bits`.
 template <bool kVisitAll, typename Visit>
-[[gnu::always_inline]] inline void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect& clip, Visit&& visit,
-                   unsigned hilbert_bits = 0) {
+[[gnu::always_inline]] inline void for_each_quad(const TriangleSetup& s, Traversal traversal, const PixelRect& clip,
+                                                 Visit&& visit, unsigned hilbert_bits = 0) {
   using simd::i64x4;
   const int x_begin = std::max(s.x0, clip.x0), y_begin = std::max(s.y0, clip.y0);
   const int x_end = std::min(s.x1, clip.x1), y_end = std::min(s.y1, clip.y1);
@@ -90,7 +88,7 @@ template <bool kVisitAll, typename Visit>
     quad_reach[k] = std::max<std::int64_t>(0, s.step_x[k]) + std::max<std::int64_t>(0, s.step_y[k]) + s.bias[k];
   // The quads of the rectangle whose top-left quad has edge functions `first`, row-major.
   const auto quads_of_rectangle = [&](int x0, int y0, int x1, int y1, const std::int64_t* first)
-                                      __attribute__((always_inline)) {
+      __attribute__((always_inline)) {
     i64x4 row[3];
     for (int k = 0; k < 3; ++k) row[k] = pixel_offsets[k] + first[k];
     const std::int64_t columns = (x1 - x0) / 2 + 1;
@@ -124,8 +122,7 @@ template <bool kVisitAll, typename Visit>
     }
   };
   std::int64_t corner[3];
-  for (int k = 0; k < 3; ++k)
-    corner[k] = s.origin[k] + s.step_x[k] * (x_begin - s.x0) + s.step_y[k] * (y_begin - s.y0);
+  for (int k = 0; k < 3; ++k) corner[k] = s.origin[k] + s.step_x[k] * (x_begin - s.x0) + s.step_y[k] * (y_begin - s.y0);
   if (traversal == Traversal::Scanline) {
     quads_of_rectangle(x_begin, y_begin, x_end, y_end, corner);
     return;

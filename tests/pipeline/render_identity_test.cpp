@@ -17,8 +17,8 @@
 
 #include "pipeline/render_scene.h"
 #include "raster/quad_loop.h"
-#include "tests/reference/cross_check_scenes.h"
 #include "scenes/builtin_scenes.h"
+#include "tests/reference/cross_check_scenes.h"
 #include "tests/support/temp_dir.h"
 #include "traces/tee_sink.h"
 #include "traces/trace_writer.h"
@@ -31,7 +31,8 @@ class Digest {
  public:
   template <typename T>
   void add(T value) {
-    for (std::size_t i = 0; i < sizeof(T); ++i) byte(static_cast<std::uint8_t>(static_cast<std::uint64_t>(value) >> (8 * i)));
+    for (std::size_t i = 0; i < sizeof(T); ++i)
+      byte(static_cast<std::uint8_t>(static_cast<std::uint64_t>(value) >> (8 * i)));
   }
   void bytes(const void* data, std::size_t size) {
     const auto* p = static_cast<const std::uint8_t*>(data);
@@ -188,7 +189,8 @@ std::vector<std::pair<std::string, Scene>> identity_scenes() {
   scenes.emplace_back("near_clip", testing::near_clip_scene());
   scenes.emplace_back("grazing_plane", testing::grazing_plane_scene());
   scenes.emplace_back("bunny_checker", testing::bunny_checker_scene(320, 240));
-  for (const std::string& name : builtin_scene_names()) scenes.emplace_back("builtin:" + name, make_builtin_scene(name));
+  for (const std::string& name : builtin_scene_names())
+    scenes.emplace_back("builtin:" + name, make_builtin_scene(name));
   return scenes;
 }
 

@@ -125,8 +125,7 @@ TEST(QuadFilter, RastraceSimdChoosesTheBaselineKernel) {
     use_wide_quad_loop(true);        // which a test cannot turn back on past the variable
     EXPECT_FALSE(wide_quad_loop());
   } else {
-    EXPECT_EQ(renderer_simd_level(),
-              simd_level_supported(SimdLevel::Avx2) ? SimdLevel::Avx2 : SimdLevel::Sse2);
+    EXPECT_EQ(renderer_simd_level(), simd_level_supported(SimdLevel::Avx2) ? SimdLevel::Avx2 : SimdLevel::Sse2);
   }
 }
 
