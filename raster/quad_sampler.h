@@ -73,15 +73,19 @@ void sample_quad_nearest(const Image& level, unsigned level_index, const Sampler
     QuadFilterOutput out;
     renderer_quad_filter()(in, out);
     const int second_level_lane = in.two_pixels ? 2 : 4;
-    if (!recorder.recording()) recorder.count_unrecorded(static_cast<std::uint64_t>(count) * (plan.blend ? 8 : 4));
-    for (int j = 0; j < count && recorder.recording(); ++j) {
-      const int i = sampled[j], lane = in.two_pixels ? j : i;
-      site.pixel_x = static_cast<std::uint16_t>(qx + (i & 1));
-      site.pixel_y = static_cast<std::uint16_t>(qy + (i >> 1));
-      recorder.record_footprint(site, plan.first, out.x0[lane], out.x1[lane], out.y0[lane], out.y1[lane]);
-      if (plan.blend) {
-        const int second = lane + second_level_lane;
-        recorder.record_footprint(site, plan.first + 1, out.x0[second], out.x1[second], out.y0[second], out.y1[second]);
+    if (!recorder.sink()) {
+      recorder.count_unrecorded(static_cast<std::uint64_t>(count) * (plan.blend ? 8 : 4));
+    } else {
+      for (int j = 0; j < count; ++j) {
+        const int i = sampled[j], lane = in.two_pixels ? j : i;
+        site.pixel_x = static_cast<std::uint16_t>(qx + (i & 1));
+        site.pixel_y = static_cast<std::uint16_t>(qy + (i >> 1));
+        recorder.record_footprint(site, plan.first, out.x0[lane], out.x1[lane], out.y0[lane], out.y1[lane]);
+        if (plan.blend) {
+          const int second = lane + second_level_lane;
+          recorder.record_footprint(site, plan.first + 1, out.x0[second], out.x1[second], out.y0[second],
+                                    out.y1[second]);
+        }
       }
     }
     if (in.two_pixels) {

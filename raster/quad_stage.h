@@ -66,6 +66,9 @@ struct QuadCoefficients {
       d2[j] = simd::splat(s.d2[j]);
     }
   }
+  // Attribute j at the four centres whose barycentric weights of vertices 1 and 2 are l1, l2.
+  simd::f32x4 attribute(int j, simd::f32x4 l1, simd::f32x4 l2) const { return base[j] + l1 * d1[j] + l2 * d2[j]; }
+
   simd::f32x4 inv_area;
   simd::f32x4 base[kRasterAttributes], d1[kRasterAttributes], d2[kRasterAttributes];
 };
@@ -182,7 +185,7 @@ template <bool kTextured, bool kDebug>
   // Barycentric weights of vertices 1 and 2 at the four centres (helper pixels included).
   q.l1 = simd::to_float(pe[1]) * k.inv_area;
   q.l2 = simd::to_float(pe[2]) * k.inv_area;
-  auto attribute = [&](int j) { return k.base[j] + q.l1 * k.d1[j] + q.l2 * k.d2[j]; };
+  auto attribute = [&](int j) { return k.attribute(j, q.l1, q.l2); };
   q.z = attribute(7);
   // Hierarchical Z: no covered fragment can pass if none is nearer than the farthest depth of
   // the quad's 8x8 tile; the quad is rejected without reading the depth buffer.
@@ -233,7 +236,7 @@ template <bool kTextured, bool kDebug>
   }
   const unsigned shade = late ? q.mask : q.pass;
   stats.fragments_shaded += simd::lanes_set(shade);
-  auto attribute = [&](int j) { return k.base[j] + q.l1 * k.d1[j] + q.l2 * k.d2[j]; };
+  auto attribute = [&](int j) { return k.attribute(j, q.l1, q.l2); };
   // Channels in vectors, pixels in lanes, as the sampler returns them.
   f32x4 shaded[4] = {attribute(3) * q.w, attribute(4) * q.w, attribute(5) * q.w, attribute(6) * q.w};
   if constexpr (kTextured) {

@@ -99,8 +99,7 @@ class TexelRecorder {
   void flush() { window_.flush(); }
   std::uint64_t reads() const { return reads_; }
   // Without a sink, recording is counting: a caller may count n reads at once instead of
-  // recording them one by one (only when recording() is false).
-  bool recording() const { return sink_ != nullptr; }
+  // recording them one by one (only when sink() is null).
   void count_unrecorded(std::uint64_t n) { reads_ += n; }
   EventSink* sink() const { return sink_; }
 

@@ -178,14 +178,15 @@ constexpr auto kPack = [] {
 }();
 
 __attribute__((target("avx2,popcnt"))) std::size_t list_changes_avx2(const std::uint32_t* v, std::size_t n,
-                                                                      std::uint32_t* change) {
+                                                                     std::uint32_t* change) {
   std::size_t i = 1, count = 0;
   __m256i index = _mm256_setr_epi32(1, 2, 3, 4, 5, 6, 7, 8);
   const __m256i eight = _mm256_set1_epi32(8);
   for (; i + 8 <= n; i += 8) {
     const __m256i here = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(v + i));
     const __m256i before = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(v + i - 1));
-    const unsigned same = static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(here, before))));
+    const unsigned same =
+        static_cast<unsigned>(_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(here, before))));
     const unsigned changed = ~same & 0xFFu;
     const __m256i order = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(kPack[changed].data()));
     _mm256_storeu_si256(reinterpret_cast<__m256i*>(change + count), _mm256_permutevar8x32_epi32(index, order));
@@ -318,15 +319,13 @@ void put_column_of(std::string& out, const T* v, std::size_t n, ColumnScratch& s
   put_fixed(out.data() + start, v, n, width);
 }
 
-}  // namespace
-
-namespace {
 // Positions, counts and the mode headers' fields are 32-bit.
 void check_records(std::size_t n) {
   if (n > kMostColumnRecords)
     throw std::length_error("a trace column of " + std::to_string(n) + " records (at most " +
                             std::to_string(kMostColumnRecords) + ")");
 }
+
 }  // namespace
 
 void put_column(std::string& out, std::span<const std::uint32_t> values, ColumnScratch& scratch) {

@@ -9,9 +9,9 @@
 // stream to disk. When a writer ends, its compressors (one per thread, at most kMostThreads) and
 // chunks (at most chunks_in_flight + 1) are kept for the next writer in the process, so that a
 // program writing a trace per frame does not allocate them afresh for each. The file appears
-// only when finish() succeeds (core/atomic_file.h); a writer
-// destroyed without finish() leaves nothing behind. The first error (a failed write, disk full)
-// is thrown from the next submission of a chunk or from finish().
+// only when finish() succeeds (core/atomic_file.h); a writer destroyed without finish() leaves
+// nothing behind. The first error (a failed write, disk full) is thrown from the next submission
+// of a chunk or from finish().
 //
 //   TraceMetadata meta{.scene = "builtin:bunny", .ordering = "tipsy", .width = 512, .height = 512,
 //                      .filter = "trilinear", .textures = {mip_chain_sizes(256, 256)}};
