@@ -72,9 +72,10 @@ TEST(QuadFilter, TheSse2AndAvx2KernelsGiveTheSameTexelsAndColourBits) {
   EXPECT_EQ(compared, 20000 * 16);
 }
 
-// REPEAT on a level whose size is not a power of two wraps without an integer division (a
-// quotient in double, corrected): every kernel must give wrap_coordinate's texel for every size,
-// out to the coordinate limit.
+// REPEAT on a level whose size is not a power of two wraps without an integer division: one step
+// when every lane is within a repetition either side, else a quotient in double, corrected. Every
+// kernel must give wrap_coordinate's texel for every size, out to the coordinate limit, on both
+// paths and at the edges between them.
 TEST(QuadFilter, RepeatWrapsEqualTheScalarWrapForEverySizeOutToTheCoordinateLimit) {
   std::mt19937 random(41);
   std::uniform_real_distribution<float> any(-kCoordinateLimit, kCoordinateLimit), near(-3.0f, 3.0f);
@@ -95,7 +96,16 @@ TEST(QuadFilter, RepeatWrapsEqualTheScalarWrapForEverySizeOutToTheCoordinateLimi
         in.blend = trial % 2 == 1;
         for (int i = 0; i < 4; ++i) {
           const int pick = trial * 4 + i;
-          in.s[i] = pick < 8 ? edges[pick] : (pick % 3 == 0 ? any(random) : near(random));
+          if (pick < 8)
+            in.s[i] = edges[pick];
+          else if (trial % 4 == 2)  // every lane near: the one-step path
+            in.s[i] = near(random);
+          else if (trial % 4 == 3)  // texel columns -size and 2 size - 1, the ends of that path, or one beyond
+            in.s[i] = (static_cast<float>(i % 2 == 0 ? -size : 2 * size - 1) +
+                       static_cast<float>(trial % 8 == 7 && i >= 2 ? (i % 2 == 0 ? -1 : 1) : 0) + 0.5f) /
+                      static_cast<float>(size);
+          else
+            in.s[i] = pick % 3 == 0 ? any(random) : near(random);
           in.t[i] = 0.5f;
         }
         QuadFilterOutput out;
