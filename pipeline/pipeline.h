@@ -112,6 +112,9 @@ class Pipeline {
   // Draws `call` with the mesh's vertices placed by `model`. Throws InputError for an index
   // >= the vertex count, a material or texture index out of range.
   void draw(const Mesh& mesh, const glm::mat4& model, const DrawCall& call, std::span<const Texture> textures);
+  // Clears the framebuffer in order with the draws (Rasterizer::clear). With several raster
+  // threads the clear too is complete only after finish().
+  void clear(const glm::vec4& colour, float depth = 1.0f) { rasterizer_.clear(colour, depth); }
   // Flushes events, draws what the rasterizer still holds (RasterOptions::threads > 1) and calls
   // the sink's finish(). With several raster threads the framebuffer is complete only after it.
   void finish();

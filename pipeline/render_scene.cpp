@@ -35,8 +35,8 @@ RenderStats render_scene_into(Framebuffer& framebuffer, const Scene& scene, cons
                      (framebuffer.has_debug_planes() ? " with" : " without") + " debug planes for a " +
                      std::to_string(scene.width) + "x" + std::to_string(scene.height) + " scene" +
                      (options.debug_planes ? " with" : " without") + " them");
-  framebuffer.clear(options.clear_colour.value_or(scene.background));
   Pipeline pipeline(framebuffer, options.pipeline, sink);
+  pipeline.clear(options.clear_colour.value_or(scene.background));
   const CameraMatrices camera = camera_matrices(scene);
   pipeline.set_camera(camera.view, camera.projection);
   const std::span<const DrawCall> calls = options.object_draws;

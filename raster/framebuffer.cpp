@@ -4,8 +4,8 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <vector>
 #include <memory>
+#include <vector>
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -29,21 +29,37 @@ Framebuffer::Framebuffer(int width, int height, bool debug_planes) : width_(widt
   clear(glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
 }
 
-void Framebuffer::clear(const glm::vec4& colour, float depth) {
+void Framebuffer::set_clear(const glm::vec4& colour, float depth) {
   std::uint8_t c[4];
   for (int i = 0; i < 4; ++i) c[i] = static_cast<std::uint8_t>(std::lround(std::clamp(colour[i], 0.0f, 1.0f) * 255.0f));
-  std::uint32_t packed;
-  std::memcpy(&packed, c, 4);
-  // The first pixel, then the filled part copied after itself, doubling: a few large memcpy
-  // calls instead of a store per pixel (the clear is a tenth of a small frame's time).
-  std::uint8_t* out = colour_.data();
-  const std::size_t size = colour_.size();
-  std::memcpy(out, &packed, 4);
-  for (std::size_t filled = 4; filled < size; filled *= 2) std::memcpy(out + filled, out, std::min(filled, size - filled));
-  std::fill(depth_.begin(), depth_.end(), depth);
+  std::memcpy(&clear_colour_, c, 4);
   clear_depth_ = depth;
-  std::fill(write_count_.begin(), write_count_.end(), std::uint16_t{0});
-  std::fill(centre_on_edge_.begin(), centre_on_edge_.end(), std::uint8_t{0});
+}
+
+void Framebuffer::clear(const glm::vec4& colour, float depth) {
+  set_clear(colour, depth);
+  clear_rows(0, height_);
+}
+
+void Framebuffer::clear_rows(int y0, int y1) {
+  y0 = std::max(y0, 0);
+  y1 = std::min(y1, height_);
+  if (y0 >= y1) return;
+  const std::size_t first = static_cast<std::size_t>(y0) * static_cast<std::size_t>(width_);
+  const std::size_t pixels = static_cast<std::size_t>(y1 - y0) * static_cast<std::size_t>(width_);
+  // The first pixel, then the filled part copied after itself, doubling: a few large memcpy
+  // calls instead of a store per pixel (the clear is a tenth of a small frame's time). Large
+  // copies and fills write whole cache lines without reading them first.
+  std::uint8_t* out = colour_.data() + first * 4;
+  const std::size_t size = pixels * 4;
+  std::memcpy(out, &clear_colour_, 4);
+  for (std::size_t filled = 4; filled < size; filled *= 2)
+    std::memcpy(out + filled, out, std::min(filled, size - filled));
+  std::fill_n(depth_.data() + first, pixels, clear_depth_);
+  if (!write_count_.empty()) {
+    std::fill_n(write_count_.data() + first, pixels, std::uint16_t{0});
+    std::fill_n(centre_on_edge_.data() + first, pixels, std::uint8_t{0});
+  }
 }
 
 std::uint64_t Framebuffer::covered_pixels() const {
@@ -66,8 +82,7 @@ void write_image(const std::string& path, const OIIO::ImageSpec& spec, const voi
     // truncated PNG back makes libpng longjmp past OpenImageIO's error string (a leak).
     std::vector<unsigned char> encoded;
     OIIO::Filesystem::IOVecOutput memory(encoded);
-    if (!out->set_ioproxy(&memory) || !out->open(path, spec) || !out->write_image(spec.format, pixels) ||
-        !out->close())
+    if (!out->set_ioproxy(&memory) || !out->open(path, spec) || !out->write_image(spec.format, pixels) || !out->close())
       throw InputError(path + ": cannot encode the image: " + out->geterror());
     write_file_atomically(path, [&](std::ostream& file) {
       file.write(reinterpret_cast<const char*>(encoded.data()), static_cast<std::streamsize>(encoded.size()));
@@ -81,8 +96,7 @@ void write_image(const std::string& path, const OIIO::ImageSpec& spec, const voi
     // taken here: left pending, OpenImageIO prints it from the destructor.
     auto in = OIIO::ImageInput::open(temporary.string());
     if (!in)
-      throw InputError(path + ": write failed (disk full?): the image does not read back (" + OIIO::geterror() +
-                       ")");
+      throw InputError(path + ": write failed (disk full?): the image does not read back (" + OIIO::geterror() + ")");
     std::vector<unsigned char> check(spec.image_bytes());
     if (!in->read_image(0, 0, 0, spec.nchannels, spec.format, check.data()))
       throw InputError(path + ": write failed (disk full?): the image does not read back whole (" + in->geterror() +

@@ -18,7 +18,12 @@ class Framebuffer {
   // width, height in 1..16384; throws InputError otherwise.
   Framebuffer(int width, int height, bool debug_planes = false);
 
+  // Writes `colour` and `depth` to every pixel (and zeroes the debug planes).
   void clear(const glm::vec4& colour, float depth = 1.0f);
+  // The same in parts, for a renderer that shares the clear out between threads: set_clear()
+  // only keeps the values, clear_rows() writes them to rows y0 <= y < y1 (within the image).
+  void set_clear(const glm::vec4& colour, float depth = 1.0f);
+  void clear_rows(int y0, int y1);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -48,6 +53,7 @@ class Framebuffer {
   int width_;
   int height_;
   float clear_depth_ = 1.0f;
+  std::uint32_t clear_colour_ = 0;  // RGBA8 as stored
   std::vector<std::uint8_t> colour_;
   std::vector<float> depth_;
   std::vector<std::uint16_t> write_count_;

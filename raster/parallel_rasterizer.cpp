@@ -167,10 +167,16 @@ ParallelRasterizer::ParallelRasterizer(Framebuffer& framebuffer, const RasterOpt
       rasterize_tile(*workers_[w], batch, batch.busy_tiles[i]);
   };
   copy_runs_ = [this](unsigned) { copy_runs(*merging_); };
+  clear_rows_ = [this](unsigned w) {
+    if (w == 0) return;  // the calling thread goes on with the next triangles
+    const int helpers = static_cast<int>(pool_.size()) - 1, rows = framebuffer_.height();
+    const int band = (rows + helpers - 1) / helpers, first = (static_cast<int>(w) - 1) * band;
+    framebuffer_.clear_rows(first, first + band);
+  };
 }
 
 ParallelRasterizer::~ParallelRasterizer() {
-  if (drawing_) pool_.wait();  // an exception left a batch on the workers
+  if (drawing_ || clearing_) pool_.wait();  // an exception left a batch or a clear on the workers
   release_workspace(std::move(workspace_));
 }
 
@@ -210,6 +216,21 @@ void ParallelRasterizer::flush() {
   if (recording_) filling_->steps.push_back({StepKind::Flush, 0, 0});
 }
 
+void ParallelRasterizer::clear(const glm::vec4& colour, float depth) {
+  if (drawing_ || filling_->triangle_count > 0) run_batch(true);  // draw what came before the clear
+  finish_clear();
+  framebuffer_.set_clear(colour, depth);
+  if (hiz_) hiz_->reset(depth);
+  clearing_ = true;
+  pool_.start(clear_rows_);
+}
+
+void ParallelRasterizer::finish_clear() {
+  if (!clearing_) return;
+  clearing_ = false;
+  pool_.wait();
+}
+
 void ParallelRasterizer::finish() { run_batch(true); }
 
 RasterStats ParallelRasterizer::stats() const {
@@ -246,6 +267,7 @@ void ParallelRasterizer::complete_drawing() {
 }
 
 void ParallelRasterizer::run_batch(bool wait) {
+  finish_clear();
   complete_drawing();
   Batch& batch = *filling_;
   batch.busy_tiles.clear();

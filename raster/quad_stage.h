@@ -37,6 +37,8 @@ class HierarchicalZ {
     return static_cast<std::size_t>(qy / kTraversalTile) * columns_ + static_cast<std::size_t>(qx / kTraversalTile);
   }
   float farthest(std::size_t tile) const { return tiles_[tile]; }
+  // After a clear to `depth`: every tile's farthest depth is that.
+  void reset(float depth) { std::fill(tiles_.begin(), tiles_.end(), depth); }
   void refresh(const Framebuffer& framebuffer, std::size_t tile) {
     const int tile_x = static_cast<int>(tile % columns_), tile_y = static_cast<int>(tile / columns_);
     const int width = framebuffer.width();

@@ -49,6 +49,15 @@ EventSink* Rasterizer::event_sink() {
   return recorder_.sink();
 }
 
+void Rasterizer::clear(const glm::vec4& colour, float depth) {
+  if (parallel_) {
+    parallel_->clear(colour, depth);
+    return;
+  }
+  framebuffer_.clear(colour, depth);
+  if (hiz_) hiz_->reset(depth);
+}
+
 void Rasterizer::flush() {
   if (parallel_) {
     parallel_->flush();

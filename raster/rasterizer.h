@@ -61,11 +61,11 @@ struct RasterOptions {
 };
 
 struct RasterStats {
-  std::uint64_t triangles = 0;         // triangles set up with a non-zero area
-  std::uint64_t quads = 0;             // 2x2 quads with at least one covered pixel
-  std::uint64_t fragments = 0;         // covered pixels
-  std::uint64_t fragments_passed = 0;  // covered pixels that passed the depth test (written)
-  std::uint64_t fragments_shaded = 0;  // shaded and textured: those passed (early test), all (late)
+  std::uint64_t triangles = 0;                 // triangles set up with a non-zero area
+  std::uint64_t quads = 0;                     // 2x2 quads with at least one covered pixel
+  std::uint64_t fragments = 0;                 // covered pixels
+  std::uint64_t fragments_passed = 0;          // covered pixels that passed the depth test (written)
+  std::uint64_t fragments_shaded = 0;          // shaded and textured: those passed (early test), all (late)
   std::uint64_t fragments_rejected_early = 0;  // by the early test or hierarchical Z, before shading
   std::uint64_t quads_rejected_hiz = 0;        // by hierarchical Z, without a depth read
   std::uint64_t fragments_textured = 0;        // shaded fragments that sampled a texture
@@ -104,6 +104,10 @@ class Rasterizer {
   // Any winding; zero-area triangles draw nothing. Vertices must lie within +-2^22 pixels
   // (the pipeline's guard band keeps them far inside).
   void draw(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c, const TriangleState& state);
+  // Clears the framebuffer to `colour` and `depth` after the triangles drawn so far. With one
+  // thread at once; with more, the other threads clear it while the calling one sets up and
+  // bins the next triangles (finish() completes it).
+  void clear(const glm::vec4& colour, float depth = 1.0f);
   // Hands buffered texel events to the sink (call at the end of a draw).
   void flush();
   // Draws everything still pending (threads > 1; event_sink()'s finish() does it too). The
