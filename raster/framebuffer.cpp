@@ -48,8 +48,7 @@ void Framebuffer::clear_rows(int y0, int y1) {
   const std::size_t first = static_cast<std::size_t>(y0) * static_cast<std::size_t>(width_);
   const std::size_t pixels = static_cast<std::size_t>(y1 - y0) * static_cast<std::size_t>(width_);
   // The first pixel, then the filled part copied after itself, doubling: a few large memcpy
-  // calls instead of a store per pixel (the clear is a tenth of a small frame's time). Large
-  // copies and fills write whole cache lines without reading them first.
+  // calls instead of a store per pixel (the clear is a tenth of a small frame's time).
   std::uint8_t* out = colour_.data() + first * 4;
   const std::size_t size = pixels * 4;
   std::memcpy(out, &clear_colour_, 4);

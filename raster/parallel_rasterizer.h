@@ -63,8 +63,8 @@ class ParallelRasterizer {
   void draw(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c, const TriangleState& state);
   // Draws the triangles sent so far, then has the workers other than the calling thread clear
   // the framebuffer, each a band of rows, while the calling thread returns to set up and bin
-  // the next triangles; the next batch starts when the clear is done. On two threads the clear
-  // (a tenth of a small frame) then costs no wall-clock time before drawing starts.
+  // the next triangles; the next batch starts when the clear is done. The clear (a tenth of a
+  // small frame) so overlaps the setup and binning of the first batch instead of preceding it.
   void clear(const glm::vec4& colour, float depth);
   void flush();
   void finish();

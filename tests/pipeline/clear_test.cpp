@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <glm/ext/matrix_transform.hpp>
 
+#include "core/error.h"
 #include "pipeline/pipeline.h"
 #include "pipeline/render_scene.h"
 #include "tests/reference/cross_check_scenes.h"
@@ -80,24 +81,50 @@ TEST(Clear, ClearsBetweenDrawsGiveTheSerialPixelsAtTwoAndFourThreads) {
   }
 }
 
+// Also two clears in a row (the second waits for the first), and images with fewer rows than
+// there are threads to share them.
 TEST(Clear, AClearWithNothingDrawnAfterItIsCompleteAfterFinish) {
-  for (const unsigned threads : {1u, 2u, 3u}) {
-    Framebuffer fb(101, 67);
-    scribble(fb);
-    PipelineOptions options;
-    options.raster.threads = threads;
-    Pipeline pipeline(fb, options, nullptr);
-    pipeline.clear(glm::vec4(0.0f, 1.0f, 0.0f, 0.0f), 0.25f);
-    pipeline.finish();
-    const Pixels p = pixels_of(fb);
-    for (std::size_t i = 0; i < p.depth.size(); ++i) {
-      ASSERT_EQ(p.depth[i], 0.25f) << threads << " threads, pixel " << i;
-      ASSERT_EQ(p.colour[i * 4 + 0], 0) << threads << " threads, pixel " << i;
-      ASSERT_EQ(p.colour[i * 4 + 1], 255) << threads << " threads, pixel " << i;
-      ASSERT_EQ(p.colour[i * 4 + 2], 0) << threads << " threads, pixel " << i;
-      ASSERT_EQ(p.colour[i * 4 + 3], 0) << threads << " threads, pixel " << i;
+  for (const unsigned threads : {1u, 2u, 3u, 4u})
+    for (const int height : {67, 2}) {
+      Framebuffer fb(101, height);
+      scribble(fb);
+      PipelineOptions options;
+      options.raster.threads = threads;
+      Pipeline pipeline(fb, options, nullptr);
+      pipeline.clear(glm::vec4(1.0f, 0.0f, 1.0f, 1.0f), 0.75f);
+      pipeline.clear(glm::vec4(0.0f, 1.0f, 0.0f, 0.0f), 0.25f);
+      pipeline.finish();
+      const Pixels p = pixels_of(fb);
+      for (std::size_t i = 0; i < p.depth.size(); ++i) {
+        ASSERT_EQ(p.depth[i], 0.25f) << threads << " threads, pixel " << i;
+        ASSERT_EQ(p.colour[i * 4 + 0], 0) << threads << " threads, pixel " << i;
+        ASSERT_EQ(p.colour[i * 4 + 1], 255) << threads << " threads, pixel " << i;
+        ASSERT_EQ(p.colour[i * 4 + 2], 0) << threads << " threads, pixel " << i;
+        ASSERT_EQ(p.colour[i * 4 + 3], 0) << threads << " threads, pixel " << i;
+      }
     }
+}
+
+// A draw that throws after a clear leaves the workers idle: the pipeline is destroyed without
+// waiting forever, and the next frame on the same threads is the serial one.
+TEST(Clear, AnErrorAfterAClearLeavesNothingRunning) {
+  const Scene scene = testing::bunny_checker_scene(320, 240);
+  RenderOptions options;
+  options.pipeline.raster.threads = 2;
+  {
+    Framebuffer fb(scene.width, scene.height);
+    Pipeline pipeline(fb, options.pipeline, nullptr);
+    pipeline.clear(glm::vec4(1.0f));
+    const std::vector<std::uint32_t> beyond = {0, 1,
+                                               static_cast<std::uint32_t>(scene.objects[0].mesh.positions.size())};
+    DrawCall call;
+    call.indices = beyond;
+    call.type = PrimitiveType::TriangleList;
+    EXPECT_THROW(pipeline.draw(scene.objects[0].mesh, glm::mat4(1.0f), call, scene.textures), InputError);
   }
+  const RenderResult serial = render_scene(scene, RenderOptions{}, nullptr);
+  const RenderResult parallel = render_scene(scene, options, nullptr);
+  EXPECT_EQ(first_difference(pixels_of(parallel.framebuffer), pixels_of(serial.framebuffer)), -1);
 }
 
 // A render target kept from frame to frame (as the benchmarks and an application keep one):

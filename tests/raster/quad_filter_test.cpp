@@ -88,35 +88,50 @@ TEST(QuadFilter, RepeatWrapsEqualTheScalarWrapForEverySizeOutToTheCoordinateLimi
   for (const SimdLevel level : {SimdLevel::Sse2, SimdLevel::Avx2}) {
     if (!simd_level_supported(level)) continue;
     const QuadFilterKernel kernel = quad_filter_kernel(level);
-    for (const int size : sizes)
+    for (std::size_t index = 0; index < sizes.size(); ++index)
       for (int trial = 0; trial < 40; ++trial) {
+        const int size = sizes[index];
         QuadFilterInput in;
         in.levels[0] = {texels.data(), size, 1};
-        in.levels[1] = {texels.data(), size, 1};
-        in.blend = trial % 2 == 1;
+        // The second level of another size, as a blend's two levels are.
+        in.levels[1] = {texels.data(), sizes[(index + 7) % sizes.size()], 1};
+        // Edge trials: the texel columns at the ends of the one-step path (-size, 2 size - 1) in
+        // every lane, or with the last lane one beyond an end (-size - 1, 2 size), which must send
+        // the quad to the division; each with one level and with two.
+        const bool edge_trial = trial % 4 == 3;
+        const int pattern = (trial / 8) % 3;
+        in.blend = edge_trial ? (trial / 4) % 2 == 1 : trial % 2 == 1;
+        int column[4] = {};
         for (int i = 0; i < 4; ++i) {
           const int pick = trial * 4 + i;
-          if (pick < 8)
+          if (pick < 8) {
             in.s[i] = edges[pick];
-          else if (trial % 4 == 2)  // every lane near: the one-step path
+          } else if (trial % 4 == 2) {  // every lane near: the one-step path
             in.s[i] = near(random);
-          else if (trial % 4 == 3)  // texel columns -size and 2 size - 1, the ends of that path, or one beyond
-            in.s[i] = (static_cast<float>(i % 2 == 0 ? -size : 2 * size - 1) +
-                       static_cast<float>(trial % 8 == 7 && i >= 2 ? (i % 2 == 0 ? -1 : 1) : 0) + 0.5f) /
-                      static_cast<float>(size);
-          else
+          } else if (edge_trial) {
+            column[i] = i % 2 == 0 ? -size : 2 * size - 1;
+            if (i == 3 && pattern == 1) column[i] = -size - 1;
+            if (i == 3 && pattern == 2) column[i] = 2 * size;
+            // A quarter texel into the column: floor(s size - 1/2) is the column.
+            in.s[i] = (static_cast<float>(column[i]) + 0.75f) / static_cast<float>(size);
+          } else {
             in.s[i] = pick % 3 == 0 ? any(random) : near(random);
+          }
           in.t[i] = 0.5f;
         }
         QuadFilterOutput out;
         kernel(in, out);
         for (int l = 0; l < (in.blend ? 8 : 4); ++l) {
-          const float u = in.s[l % 4] * static_cast<float>(size) - 0.5f;
+          const int lane_size = in.levels[l / 4].width;
+          const float u = in.s[l % 4] * static_cast<float>(lane_size) - 0.5f;
           const int i = static_cast<int>(std::floor(u));
-          ASSERT_EQ(out.x0[l], wrap_coordinate(i, size, TextureWrap::Repeat))
-              << to_string(level) << " size " << size << " s " << in.s[l % 4];
-          ASSERT_EQ(out.x1[l], wrap_coordinate(i + 1, size, TextureWrap::Repeat))
-              << to_string(level) << " size " << size << " s " << in.s[l % 4];
+          if (edge_trial && l < 4) {
+            ASSERT_EQ(i, column[l]) << "size " << size;  // the edge is hit
+          }
+          ASSERT_EQ(out.x0[l], wrap_coordinate(i, lane_size, TextureWrap::Repeat))
+              << to_string(level) << " size " << lane_size << " s " << in.s[l % 4];
+          ASSERT_EQ(out.x1[l], wrap_coordinate(i + 1, lane_size, TextureWrap::Repeat))
+              << to_string(level) << " size " << lane_size << " s " << in.s[l % 4];
           ++compared;
         }
       }
