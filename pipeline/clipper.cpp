@@ -8,31 +8,6 @@ Clipper::Clipper(int viewport_width, int viewport_height, float guard_band)
     : gx_(1.0f + 2.0f * std::max(0.0f, guard_band) / static_cast<float>(std::max(1, viewport_width))),
       gy_(1.0f + 2.0f * std::max(0.0f, guard_band) / static_cast<float>(std::max(1, viewport_height))) {}
 
-// Planes: 0 near, 1 far, 2 left, 3 right, 4 bottom, 5 top; inside when distance >= 0.
-float Clipper::distance(int plane, const glm::vec4& p) const {
-  switch (plane) {
-    case 0:
-      return p.z + p.w;
-    case 1:
-      return p.w - p.z;
-    case 2:
-      return p.x + gx_ * p.w;
-    case 3:
-      return gx_ * p.w - p.x;
-    case 4:
-      return p.y + gy_ * p.w;
-    default:
-      return gy_ * p.w - p.y;
-  }
-}
-
-std::uint32_t Clipper::outcode(const glm::vec4& p) const {
-  std::uint32_t code = 0;
-  for (int plane = 0; plane < 6; ++plane)
-    if (!(distance(plane, p) >= 0.0f)) code |= 1u << plane;  // NaN counts as outside
-  return code;
-}
-
 void Clipper::clip(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c, std::uint32_t planes,
                    ClipPolygon& out) const {
   ClipPolygon buffer;

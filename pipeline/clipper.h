@@ -31,8 +31,14 @@ class Clipper {
   // viewport in pixels; guard_band in pixels beyond each side (0 = clip at the viewport).
   Clipper(int viewport_width, int viewport_height, float guard_band);
 
-  // Outcode bits of a clip-space position: one per plane it lies outside of.
-  std::uint32_t outcode(const glm::vec4& p) const;
+  // Outcode bits of a clip-space position: one per plane it lies outside of. Inline: three per
+  // triangle, and the six planes unroll into straight-line code.
+  std::uint32_t outcode(const glm::vec4& p) const {
+    std::uint32_t code = 0;
+    for (int plane = 0; plane < 6; ++plane)
+      if (!(distance(plane, p) >= 0.0f)) code |= 1u << plane;  // NaN counts as outside
+    return code;
+  }
 
   // Clips the triangle; returns the polygon (count 0 when nothing remains). Call only when
   // the outcodes' union is non-zero and their intersection zero (otherwise nothing to do).
@@ -41,7 +47,23 @@ class Clipper {
 
  private:
   float gx_, gy_;  // guard-band planes: |x| <= gx w, |y| <= gy w
-  float distance(int plane, const glm::vec4& p) const;
+  // Planes: 0 near, 1 far, 2 left, 3 right, 4 bottom, 5 top; inside when distance >= 0.
+  float distance(int plane, const glm::vec4& p) const {
+    switch (plane) {
+      case 0:
+        return p.z + p.w;
+      case 1:
+        return p.w - p.z;
+      case 2:
+        return p.x + gx_ * p.w;
+      case 3:
+        return gx_ * p.w - p.x;
+      case 4:
+        return p.y + gy_ * p.w;
+      default:
+        return gy_ * p.w - p.y;
+    }
+  }
 };
 
 }  // namespace rastrace
