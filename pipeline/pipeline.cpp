@@ -92,8 +92,8 @@ void Pipeline::draw(const Mesh& mesh, const glm::mat4& model, const DrawCall& ca
     }
     if (!cache_.access(v)) {
       ++stats_.vertices_shaded;
-      shaded_[v] =
-          shader_.shade(mesh.positions[v], has_normals ? &mesh.normals[v] : nullptr, has_uvs ? &mesh.uvs[v] : nullptr);
+      shader_.shade_into(shaded_[v], mesh.positions[v], has_normals ? &mesh.normals[v] : nullptr,
+                         has_uvs ? &mesh.uvs[v] : nullptr);
     }
   };
 
@@ -151,23 +151,24 @@ void Pipeline::triangle(const Mesh& /*mesh*/, std::uint32_t a, std::uint32_t b, 
     ++stats_.outside;
     return;
   }
-  ClipPolygon polygon;
+  // The triangle itself, or the polygon the clipper left of it (a member: a ClipPolygon's nine
+  // vertices are initialised when it is made, which per triangle cost more than drawing a small
+  // one).
+  const ClipVertex* vertices = v;
+  int count = 3;
   if (c0 | c1 | c2) {
     ++stats_.clipped;
-    clipper_.clip(v[0], v[1], v[2], c0 | c1 | c2, polygon);
-  } else {
-    polygon.vertices[0] = v[0];
-    polygon.vertices[1] = v[1];
-    polygon.vertices[2] = v[2];
-    polygon.count = 3;
+    clipper_.clip(v[0], v[1], v[2], c0 | c1 | c2, clipped_);
+    vertices = clipped_.vertices.data();
+    count = clipped_.count;
   }
-  if (polygon.count < 3) return;
+  if (count < 3) return;
 
   const float half_w = 0.5f * static_cast<float>(framebuffer_.width());
   const float half_h = 0.5f * static_cast<float>(framebuffer_.height());
-  RasterVertex r[9];
-  for (int i = 0; i < polygon.count; ++i) {
-    const ClipVertex& p = polygon.vertices[static_cast<std::size_t>(i)];
+  RasterVertex* r = projected_.data();
+  for (int i = 0; i < count; ++i) {
+    const ClipVertex& p = vertices[i];
     if (!(p.position.w > 0.0f)) return;  // only a triangle through the eye itself; nothing visible
     const float inv_w = 1.0f / p.position.w;
     RasterVertex& out = r[i];
@@ -181,9 +182,9 @@ void Pipeline::triangle(const Mesh& /*mesh*/, std::uint32_t a, std::uint32_t b, 
   // Facing from the whole polygon's signed area in image coordinates (y down): a negative area
   // is counter-clockwise as seen on screen, GL's default front face.
   float area = 0.0f;
-  for (int i = 0; i < polygon.count; ++i) {
+  for (int i = 0; i < count; ++i) {
     const RasterVertex& p = r[i];
-    const RasterVertex& q = r[(i + 1) % polygon.count];
+    const RasterVertex& q = r[(i + 1) % count];
     area += p.x * q.y - q.x * p.y;
   }
   const bool front = area < 0.0f;
@@ -191,7 +192,7 @@ void Pipeline::triangle(const Mesh& /*mesh*/, std::uint32_t a, std::uint32_t b, 
     ++stats_.culled;
     return;
   }
-  for (int i = 1; i + 1 < polygon.count; ++i) {
+  for (int i = 1; i + 1 < count; ++i) {
     ++stats_.rasterized;
     rasterizer_.draw(r[0], r[i], r[i + 1], state);
   }

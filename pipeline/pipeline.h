@@ -136,7 +136,9 @@ class Pipeline {
   VertexCache cache_;
   glm::mat4 view_{1.0f}, projection_{1.0f};
   VertexShader shader_;
-  std::vector<ShadedVertex> shaded_;  // by vertex id; valid while the vertex is in the cache
+  std::vector<ShadedVertex> shaded_;       // by vertex id; valid while the vertex is in the cache
+  ClipPolygon clipped_;                    // triangle(): what the clipper leaves
+  std::array<RasterVertex, 9> projected_;  // triangle(): its vertices in image coordinates
   static constexpr std::size_t kFetchBatch = 1024;
   // Set once sink_ is final (the rasterizer's ordered sink with several threads).
   std::optional<EventWindow<VertexFetch, kFetchBatch>> fetches_;

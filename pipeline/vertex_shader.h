@@ -7,6 +7,9 @@
 // exactly GL's ambient * diffuse + max(0, n.l) * diffuse for a white light.
 #pragma once
 
+#include <algorithm>
+
+#include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
@@ -32,7 +35,26 @@ class VertexShader {
   VertexShader() = default;
   VertexShader(const glm::mat4& model_view, const glm::mat4& projection, const Lighting& lighting);
 
-  ShadedVertex shade(const glm::vec3& position, const glm::vec3* normal, const glm::vec2* uv) const;
+  ShadedVertex shade(const glm::vec3& position, const glm::vec3* normal, const glm::vec2* uv) const {
+    ShadedVertex out;
+    shade_into(out, position, normal, uv);
+    return out;
+  }
+  // The same, written field by field into `out`: the pipeline's vertex array. Returned from a
+  // call and copied, the vertex went through the stack, and the copy's 16-byte loads waited on
+  // the smaller stores that had built it (they cannot be forwarded).
+  void shade_into(ShadedVertex& out, const glm::vec3& position, const glm::vec3* normal, const glm::vec2* uv) const {
+    out.clip = mvp_ * glm::vec4(position, 1.0f);
+    out.uv = uv ? *uv : glm::vec2(0.0f);
+    out.light = 1.0f;
+    if (lighting_.enabled) {
+      // Without per-vertex normals GL uses the current normal, (0, 0, 1) by default.
+      const glm::vec3 n = normal_matrix_ * (normal ? *normal : glm::vec3(0.0f, 0.0f, 1.0f));
+      const float length = glm::length(n);
+      const float diffuse = length > 0.0f ? std::max(0.0f, glm::dot(n / length, lighting_.direction)) : 0.0f;
+      out.light = lighting_.ambient + diffuse;
+    }
+  }
 
   const glm::mat4& model_view() const { return model_view_; }
   const glm::mat4& projection() const { return projection_; }
