@@ -28,6 +28,11 @@ void sample_quad_nearest(const Image& level, unsigned level_index, const Sampler
                          simd::f32x4 t, unsigned pixels, int qx, int qy, TexelRecorder& recorder, TexelSite site,
                          simd::f32x4 rgba[4]);
 
+// safe_coordinate (sampler.h) of each lane.
+[[gnu::always_inline]] inline simd::f32x4 safe_coordinates(simd::f32x4 s) {
+  return simd::clamp(simd::finite_or_zero(s), -kCoordinateLimit, kCoordinateLimit);
+}
+
 // Samples `texture` at (s[i], t[i]) for each pixel i of the quad at (qx, qy) whose bit is set in
 // `pixels` (0 top-left, 1 top-right, 2 bottom-left, 3 bottom-right), with the quad's level of
 // detail `lambda`. rgba[c] receives channel c (red, green, blue, alpha), lane i pixel i's; the
@@ -39,8 +44,8 @@ void sample_quad_nearest(const Image& level, unsigned level_index, const Sampler
                                                TexelRecorder& recorder, TexelSite site, simd::f32x4 rgba[4]) {
   using simd::f32x4;
   using simd::i32x4;
-  s = simd::clamp(simd::finite_or_zero(s), -kCoordinateLimit, kCoordinateLimit);
-  t = simd::clamp(simd::finite_or_zero(t), -kCoordinateLimit, kCoordinateLimit);
+  s = safe_coordinates(s);
+  t = safe_coordinates(t);
   const LevelPlan plan = plan_levels(texture, state, lambda);
   const Image& first = texture.levels[plan.first];
   if (plan.filter == TextureFilter::Linear) {
