@@ -17,18 +17,22 @@
 // renders one untimed frame (first_frame_cpu_ms: its process CPU time), which grows the buffers the
 // timed frames reuse, as llvmpipe's best of 5 leaves out its first frame. Fragment rates use
 // rastrace's count of fragments written for the frame (the same frame, the same coverage).
+// RASTRACE_BENCH_FRAMES sets the rastrace rows' timed frames (default 8; more to profile them).
 #include <benchmark/benchmark.h>
 
 #include <time.h>
 
+#include <unistd.h>
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <string>
+#include <string_view>
 #include <thread>
-#include <unistd.h>
 
 #include <glm/ext/matrix_transform.hpp>
 
@@ -142,7 +146,8 @@ BestFrame osmesa_frame(std::int64_t scene, ReferenceDriver driver, int llvmpipe_
 const BestFrame& llvmpipe_one_thread(std::int64_t scene) {
   static std::map<std::int64_t, BestFrame> measured;
   auto it = measured.find(scene);
-  if (it == measured.end()) it = measured.emplace(scene, osmesa_frame(scene, ReferenceDriver::Llvmpipe, 0, nullptr)).first;
+  if (it == measured.end())
+    it = measured.emplace(scene, osmesa_frame(scene, ReferenceDriver::Llvmpipe, 0, nullptr)).first;
   return it->second;
 }
 
@@ -160,6 +165,22 @@ void report(benchmark::State& state, std::uint64_t fragments, double best_second
   state.counters["best_frame_ms"] = best_seconds * 1e3;
 }
 
+// Timed frames per rastrace row: 8, or RASTRACE_BENCH_FRAMES (1 to 10000). A profile of the
+// steady state wants many: --benchmark_repetitions renders the untimed first frame again in every
+// repetition, and a traced first frame (page faults, buffers growing) costs several later ones.
+std::int64_t timed_frames() {
+  const char* text = std::getenv("RASTRACE_BENCH_FRAMES");
+  if (!text) return 8;
+  const std::string_view value(text);
+  std::int64_t frames = 0;
+  const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), frames);
+  if (error != std::errc() || end != value.data() + value.size() || frames < 1 || frames > 10000) {
+    std::fprintf(stderr, "RASTRACE_BENCH_FRAMES=%s: expected a whole number of frames from 1 to 10000\n", text);
+    std::exit(2);
+  }
+  return frames;
+}
+
 // Arguments: scene, threads (0: one, 1: every core), tracing (0: none, 1: memory, 2: file).
 void BM_Rastrace(benchmark::State& state) {
   const std::int64_t scene_index = state.range(0);
@@ -170,9 +191,8 @@ void BM_Rastrace(benchmark::State& state) {
   RenderOptions options;
   options.pipeline.raster.threads = every_core ? all_cores() : 1;
   MemorySink memory;
-  const std::string path = (std::filesystem::temp_directory_path() /
-                            ("bench_render_" + std::to_string(getpid()) + ".rtrace"))
-                               .string();
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("bench_render_" + std::to_string(getpid()) + ".rtrace")).string();
   TraceMetadata metadata;
   metadata.scene = scene.name;
   metadata.width = static_cast<std::uint32_t>(scene.width);
@@ -192,7 +212,8 @@ void BM_Rastrace(benchmark::State& state) {
       fragments = render_scene_into(framebuffer, scene, options, &writer).raster.fragments_passed;
       file_bytes = writer.bytes_written();
     } else {
-      fragments = render_scene_into(framebuffer, scene, options, tracing == 1 ? &memory : nullptr).raster.fragments_passed;
+      fragments =
+          render_scene_into(framebuffer, scene, options, tracing == 1 ? &memory : nullptr).raster.fragments_passed;
       benchmark::DoNotOptimize(framebuffer.colour());
     }
     const double cpu = process_cpu_seconds() - cpu_start;
@@ -212,27 +233,29 @@ void BM_Rastrace(benchmark::State& state) {
   std::filesystem::remove(path);
   report(state, fragments, best.wall);
   state.counters["threads"] = static_cast<double>(options.pipeline.raster.threads);
-  state.counters["process_cpu_ms"] = best.cpu * 1e3;  // all of rastrace's threads
+  state.counters["process_cpu_ms"] = best.cpu * 1e3;       // all of rastrace's threads
   state.counters["first_frame_cpu_ms"] = first.cpu * 1e3;  // growing the buffers the next frames reuse
   state.counters["vs_llvmpipe_1t"] = llvmpipe.wall / best.wall;
   if (!every_core) state.counters["vs_llvmpipe_1t_cpu"] = llvmpipe.cpu / best.cpu;
   if (tracing == 1) state.counters["events"] = static_cast<double>(events);
   if (tracing == 2) state.counters["file_bytes"] = static_cast<double>(file_bytes);
   state.SetLabel(std::string(kSceneNames[scene_index]) + (every_core ? " every core" : " one thread") +
-                 (tracing == 0 ? " untraced" : tracing == 1 ? " traced to memory" : " traced to file"));
+                 (tracing == 0   ? " untraced"
+                  : tracing == 1 ? " traced to memory"
+                                 : " traced to file"));
 }
 BENCHMARK(BM_Rastrace)
     ->ArgNames({"scene", "every_core", "trace"})
     ->ArgsProduct({{0, 1, 2}, {0, 1}, {0, 1, 2}})
     ->UseManualTime()
-    ->Iterations(8)
+    ->Iterations(timed_frames())
     ->Unit(benchmark::kMillisecond);
 // The bunny frame with BC1 and BC7 textures, to set beside the rows of scene 0 (RGBA8).
 BENCHMARK(BM_Rastrace)
     ->ArgNames({"scene", "every_core", "trace"})
     ->ArgsProduct({{3, 4}, {0, 1}, {0}})
     ->UseManualTime()
-    ->Iterations(8)
+    ->Iterations(timed_frames())
     ->Unit(benchmark::kMillisecond);
 
 // Encoding then decoding one 1024x1024 level (a gradient with noise, so no block is flat) in
@@ -277,16 +300,17 @@ void BM_OSMesa(benchmark::State& state) {
   std::string renderer;
   BestFrame best{1e30, 1e30};
   for (auto _ : state) {
-    const BestFrame f =
-        driver == 0 ? osmesa_frame(scene_index, ReferenceDriver::Softpipe, -1, &renderer)
-                    : osmesa_frame(scene_index, ReferenceDriver::Llvmpipe, driver == 1 ? 0 : static_cast<int>(all_cores()),
-                                   &renderer);
+    const BestFrame f = driver == 0 ? osmesa_frame(scene_index, ReferenceDriver::Softpipe, -1, &renderer)
+                                    : osmesa_frame(scene_index, ReferenceDriver::Llvmpipe,
+                                                   driver == 1 ? 0 : static_cast<int>(all_cores()), &renderer);
     state.SetIterationTime(f.wall);
     best.wall = std::min(best.wall, f.wall);
     best.cpu = std::min(best.cpu, f.cpu);
   }
   state.SetLabel(std::string(kSceneNames[scene_index]) + " " + renderer +
-                 (driver == 0 ? "" : driver == 1 ? " LP_NUM_THREADS=0" : " LP_NUM_THREADS=" + std::to_string(all_cores())));
+                 (driver == 0   ? ""
+                  : driver == 1 ? " LP_NUM_THREADS=0"
+                                : " LP_NUM_THREADS=" + std::to_string(all_cores())));
   report(state, frame_fragments(scene_index), best.wall);
   state.counters["cpu_ms"] = best.cpu * 1e3;
 }
