@@ -10,17 +10,17 @@
 #include <cstdlib>
 #include <cstring>
 #include <optional>
-#include <vector>
 #include <string>
+#include <vector>
 
 #include <zstd.h>
 
-#include "fuzz/fuzz_target.h"
 #include "core/error.h"
+#include "fuzz/fuzz_target.h"
 #include "traces/crc32c.h"
+#include "traces/texel_lanes.h"
 #include "traces/trace_format.h"
 #include "traces/trace_metadata.h"
-#include "traces/texel_lanes.h"
 #include "traces/trace_reader.h"
 
 namespace {
@@ -43,7 +43,7 @@ RASTRACE_FUZZ_TARGET(trace_chunk) {
   std::uint32_t records;
   std::memcpy(&records, data + 2, 4);
   // At most 2^18 records (4x the writer's default chunk): the decoders' work is linear in the
-  // count, but a chunk of 2^20 equal records is 24 MiB of texels to fill per decoding, which under
+  // count, but a chunk of 2^20 equal records is 16 MiB of texels to fill per decoding, which under
   // ASan on a loaded machine passes libFuzzer's 5 s (a 721,568-record chunk took 5.7 s wall, 1.7 s
   // CPU; fuzz/regressions/trace_chunk/texel-721k-records-slow). Counts up to the format's limit
   // and beyond it are the unit tests' and the trace_reader target's (its chunk index).

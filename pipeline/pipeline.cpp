@@ -56,8 +56,19 @@ void Pipeline::draw(const Mesh& mesh, const glm::mat4& model, const DrawCall& ca
         textures[static_cast<std::size_t>(texture)].levels.empty())
       throw InputError(mesh.name + ": material " + std::to_string(m) + " uses texture " + std::to_string(texture) +
                        " but " + std::to_string(textures.size()) + " textures are loaded");
+    const Texture& bound = textures[static_cast<std::size_t>(texture)];
+    if (static_cast<std::uint32_t>(texture) >= kMaxTracedTextures)
+      throw InputError(mesh.name + ": material " + std::to_string(m) + " uses texture " + std::to_string(texture) +
+                       ": expected at most " + std::to_string(kMaxTracedTextures) +
+                       " textures (texel events number them in 16 bits)");
+    if (static_cast<std::uint32_t>(bound.levels[0].width) > kMaxTextureSide ||
+        static_cast<std::uint32_t>(bound.levels[0].height) > kMaxTextureSide)
+      throw InputError(mesh.name + ": material " + std::to_string(m) + " uses texture '" + bound.name + "' of " +
+                       std::to_string(bound.levels[0].width) + "x" + std::to_string(bound.levels[0].height) +
+                       " texels: expected at most " + std::to_string(kMaxTextureSide) +
+                       " a side (texel events hold 16-bit coordinates)");
     if (has_uvs) {
-      states[m].texture = &textures[static_cast<std::size_t>(texture)];
+      states[m].texture = &bound;
       states[m].texture_id = static_cast<std::uint32_t>(texture);
     }
   }

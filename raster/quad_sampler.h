@@ -80,6 +80,10 @@ void sample_quad_nearest(const Image& level, unsigned level_index, const Sampler
     const int second_level_lane = in.two_pixels ? 2 : 4;
     if (!recorder.sink()) {
       recorder.count_unrecorded(static_cast<std::uint64_t>(count) * (plan.blend ? 8 : 4));
+    } else if (count == 4 && plan.blend) {
+      recorder.record_quad<true>(site, plan.first, qx, qy, out.x0, out.x1, out.y0, out.y1);
+    } else if (count == 4) {
+      recorder.record_quad<false>(site, plan.first, qx, qy, out.x0, out.x1, out.y0, out.y1);
     } else {
       for (int j = 0; j < count; ++j) {
         const int i = sampled[j], lane = in.two_pixels ? j : i;

@@ -3,12 +3,13 @@
 // a buffer handed to the sink when full, so the per-event cost is a store and the virtual call is
 // paid once per kCapacity events. With no sink, recording is a counter increment.
 //
-// An event is written as three 64-bit words, and into a sink that asks for it (sink.h) with
+// An event is written as two 64-bit words, and into a sink that asks for it (sink.h) with
 // streaming stores: a trilinear frame's tens of megabytes of events are then written to memory
 // without first reading every line of it (on the grazing plane, with the words kept in registers,
 // that halved what tracing to memory costs).
 #pragma once
 
+#include <atomic>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -18,11 +19,19 @@
 #include "traces/event_window.h"
 #include "traces/sink.h"
 
+// record_quad's vector path: AVX2, chosen at run time, on x86-64 with GCC or clang.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#define RASTRACE_TEXEL_QUAD_AVX2 1
+#else
+#define RASTRACE_TEXEL_QUAD_AVX2 0
+#endif
+
 namespace rastrace {
 
 // Where a texel read comes from: the texture and the fragment.
 struct TexelSite {
-  std::uint32_t texture = 0;
+  std::uint16_t texture = 0;
   std::uint16_t pixel_x = 0;
   std::uint16_t pixel_y = 0;
   std::uint32_t triangle = 0;
@@ -31,10 +40,10 @@ struct TexelSite {
 class TexelRecorder {
   // The words' layout is the event's, padding zero, on a little-endian machine; elsewhere the
   // events are stored field by field.
-  static constexpr bool kWords = std::endian::native == std::endian::little && sizeof(TexelAccess) == 24 &&
-                                 offsetof(TexelAccess, level) == 4 && offsetof(TexelAccess, x) == 8 &&
-                                 offsetof(TexelAccess, y) == 12 && offsetof(TexelAccess, pixel_x) == 16 &&
-                                 offsetof(TexelAccess, pixel_y) == 18 && offsetof(TexelAccess, triangle) == 20;
+  static constexpr bool kWords = std::endian::native == std::endian::little && sizeof(TexelAccess) == 16 &&
+                                 offsetof(TexelAccess, level) == 2 && offsetof(TexelAccess, x) == 4 &&
+                                 offsetof(TexelAccess, y) == 6 && offsetof(TexelAccess, pixel_x) == 8 &&
+                                 offsetof(TexelAccess, pixel_y) == 10 && offsetof(TexelAccess, triangle) == 12;
 
  public:
   static constexpr std::size_t kCapacity = 4096;
@@ -47,7 +56,7 @@ class TexelRecorder {
     ++reads_;
     if (!sink_) return;
     if constexpr (kWords) {
-      const std::uint64_t words[3] = {head(site, level), xy(x, y), tail(site)};
+      const std::uint64_t words[2] = {head(site, level, x, y), tail(site)};
       store(window_.reserve_streamed(1), words);
       window_.stored();
       return;
@@ -55,8 +64,8 @@ class TexelRecorder {
     TexelAccess& event = *window_.reserve(1);
     event.texture = site.texture;
     event.level = static_cast<std::uint8_t>(level);
-    event.x = static_cast<std::uint32_t>(x);
-    event.y = static_cast<std::uint32_t>(y);
+    event.x = static_cast<std::uint16_t>(x);
+    event.y = static_cast<std::uint16_t>(y);
     event.pixel_x = site.pixel_x;
     event.pixel_y = site.pixel_y;
     event.triangle = site.triangle;
@@ -74,8 +83,8 @@ class TexelRecorder {
     reads_ += 4;
     if (!sink_) return;
     if constexpr (kWords) {
-      const std::uint64_t h = head(site, level), t = tail(site);
-      const std::uint64_t words[12] = {h, xy(x0, y0), t, h, xy(x1, y0), t, h, xy(x0, y1), t, h, xy(x1, y1), t};
+      const std::uint64_t h = head(site, level, 0, 0), t = tail(site);
+      const std::uint64_t words[8] = {h | xy(x0, y0), t, h | xy(x1, y0), t, h | xy(x0, y1), t, h | xy(x1, y1), t};
       store(window_.reserve_streamed(4), words);
       window_.stored();
       return;
@@ -87,8 +96,8 @@ class TexelRecorder {
     event.pixel_y = site.pixel_y;
     event.triangle = site.triangle;
     TexelAccess* out = window_.reserve(4);
-    const std::uint32_t xs[2] = {static_cast<std::uint32_t>(x0), static_cast<std::uint32_t>(x1)};
-    const std::uint32_t ys[2] = {static_cast<std::uint32_t>(y0), static_cast<std::uint32_t>(y1)};
+    const std::uint16_t xs[2] = {static_cast<std::uint16_t>(x0), static_cast<std::uint16_t>(x1)};
+    const std::uint16_t ys[2] = {static_cast<std::uint16_t>(y0), static_cast<std::uint16_t>(y1)};
     for (int i = 0; i < 4; ++i) {
       out[i] = event;
       out[i].x = xs[i & 1];
@@ -96,23 +105,131 @@ class TexelRecorder {
     }
     window_.stored();
   }
+  // The footprints of a whole quad's four pixels: pixel p (at (qx + (p & 1), qy + (p >> 1)))
+  // reads the 2x2 texels of lane p in `level`, then, kTwoLevels (trilinear), those of lane p + 4
+  // in level + 1. The same events and batches as the record_footprint() calls in that order,
+  // built in vector lanes and stored whole: the calls' scalar word building and window checks
+  // were a third of what tracing the grazing plane cost.
+  using Lanes = std::int32_t __attribute__((vector_size(32)));
+  template <bool kTwoLevels>
+  [[gnu::always_inline]] void record_quad(const TexelSite& site, unsigned level, int qx, int qy, const Lanes& x0,
+                                          const Lanes& x1, const Lanes& y0, const Lanes& y1) {
+#if RASTRACE_TEXEL_QUAD_AVX2
+    if (sink_ && kWords && vector_quads()) {
+      record_quad_avx2<kTwoLevels>(site, level, qx, qy, x0, x1, y0, y1);
+      return;
+    }
+#endif
+    for (int p = 0; p < 4; ++p) {
+      TexelSite pixel = site;
+      pixel.pixel_x = static_cast<std::uint16_t>(qx + (p & 1));
+      pixel.pixel_y = static_cast<std::uint16_t>(qy + (p >> 1));
+      for (int l = 0; l < (kTwoLevels ? 2 : 1); ++l)
+        record_footprint(pixel, level + l, x0[p + 4 * l], x1[p + 4 * l], y0[p + 4 * l], y1[p + 4 * l]);
+    }
+  }
   void flush() { window_.flush(); }
   std::uint64_t reads() const { return reads_; }
+  // False: record_quad() stores footprint by footprint from now on, as on a machine without AVX2
+  // (for tests of that path on any machine; true, the default, uses AVX2 where there is one).
+  static void use_vector_quads(bool enabled) { vector_quads_wanted().store(enabled, std::memory_order_relaxed); }
   // Without a sink, recording is counting: a caller may count n reads at once instead of
   // recording them one by one (only when sink() is null).
   void count_unrecorded(std::uint64_t n) { reads_ += n; }
   EventSink* sink() const { return sink_; }
 
  private:
-  static std::uint64_t head(const TexelSite& site, unsigned level) {
-    return site.texture | std::uint64_t{static_cast<std::uint8_t>(level)} << 32;
+  // texture | level | a zero byte | x | y, then pixel_x | pixel_y | triangle.
+  static std::uint64_t head(const TexelSite& site, unsigned level, int x, int y) {
+    return site.texture | std::uint64_t{static_cast<std::uint8_t>(level)} << 16 | xy(x, y);
   }
   static std::uint64_t xy(int x, int y) {
-    return static_cast<std::uint32_t>(x) | std::uint64_t{static_cast<std::uint32_t>(y)} << 32;
+    return std::uint64_t{static_cast<std::uint16_t>(x)} << 32 | std::uint64_t{static_cast<std::uint16_t>(y)} << 48;
   }
   static std::uint64_t tail(const TexelSite& site) {
     return std::uint64_t{site.pixel_x} | std::uint64_t{site.pixel_y} << 16 | std::uint64_t{site.triangle} << 32;
   }
+  static std::atomic<bool>& vector_quads_wanted() {
+    static std::atomic<bool> wanted{true};
+    return wanted;
+  }
+#if RASTRACE_TEXEL_QUAD_AVX2
+  static bool vector_quads() {
+    static const bool has_avx2 = (__builtin_cpu_init(), __builtin_cpu_supports("avx2"));
+    return has_avx2 && vector_quads_wanted().load(std::memory_order_relaxed);
+  }
+  // record_quad() on a sink, in AVX2 and out of line: inlined into the quad loop, its vector code
+  // made the untraced frames on every core 4-5% slower (the grazing plane's), though it never ran
+  // there. Called, it costs little: the filter kernel's call just before has already spilled the
+  // loop's vectors.
+  template <bool kTwoLevels>
+  [[gnu::noinline]] __attribute__((target("avx2"))) void record_quad_avx2(const TexelSite& site, unsigned level, int qx,
+                                                                          int qy, const Lanes& x0, const Lanes& x1,
+                                                                          const Lanes& y0, const Lanes& y1) {
+    constexpr int kLevels = kTwoLevels ? 2 : 1;
+    reads_ += 16 * kLevels;
+    using u32x8 = std::uint32_t __attribute__((vector_size(32)));
+    const u32x8 low16 = {0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF};
+    const u32x8 ux0 = reinterpret_cast<const u32x8&>(x0) & low16, ux1 = reinterpret_cast<const u32x8&>(x1) & low16;
+    const u32x8 uy0 = reinterpret_cast<const u32x8&>(y0) << 16, uy1 = reinterpret_cast<const u32x8&>(y1) << 16;
+    // Word 1 (x, y) of each lane's four events, in footprint order.
+    const u32x8 c0 = ux0 | uy0, c1 = ux1 | uy0, c2 = ux0 | uy1, c3 = ux1 | uy1;
+    // Transposed: xy[p] holds lane p's four words 1 in its low half, lane p + 4's in its high half.
+    const u32x8 lo01 = __builtin_shufflevector(c0, c1, 0, 8, 1, 9, 4, 12, 5, 13);
+    const u32x8 hi01 = __builtin_shufflevector(c0, c1, 2, 10, 3, 11, 6, 14, 7, 15);
+    const u32x8 lo23 = __builtin_shufflevector(c2, c3, 0, 8, 1, 9, 4, 12, 5, 13);
+    const u32x8 hi23 = __builtin_shufflevector(c2, c3, 2, 10, 3, 11, 6, 14, 7, 15);
+    const u32x8 xy[4] = {__builtin_shufflevector(lo01, lo23, 0, 1, 8, 9, 4, 5, 12, 13),
+                         __builtin_shufflevector(lo01, lo23, 2, 3, 10, 11, 6, 7, 14, 15),
+                         __builtin_shufflevector(hi01, hi23, 0, 1, 8, 9, 4, 5, 12, 13),
+                         __builtin_shufflevector(hi01, hi23, 2, 3, 10, 11, 6, 7, 14, 15)};
+    // Word 0 (texture, level): the low half's level, then the high half's.
+    const auto w0 = static_cast<std::uint32_t>(head(site, level, 0, 0));
+    const auto w0_next = static_cast<std::uint32_t>(head(site, level + 1, 0, 0));
+    const u32x8 texture_level = {w0, w0, w0, w0, w0_next, w0_next, w0_next, w0_next};
+    TexelAccess* out = window_.reserve_streamed(16 * kLevels);
+    for (int p = 0; p < 4; ++p) {
+      // Words 2 and 3: the pixel, the triangle.
+      const std::uint32_t pixel =
+          static_cast<std::uint16_t>(qx + (p & 1)) | std::uint32_t{static_cast<std::uint16_t>(qy + (p >> 1))} << 16;
+      const std::uint32_t triangle = site.triangle;
+      const u32x8 tail_words = {pixel, triangle, pixel, triangle, pixel, triangle, pixel, triangle};
+      const u32x8 a = __builtin_shufflevector(texture_level, xy[p], 0, 8, 1, 9, 4, 12, 5, 13);    // w0 c0 w0 c1
+      const u32x8 b = __builtin_shufflevector(texture_level, xy[p], 2, 10, 3, 11, 6, 14, 7, 15);  // w0 c2 w0 c3
+      // Two events a vector: events 0-3 of the pixel (level), then 4-7 (level + 1).
+      const u32x8 events[4] = {__builtin_shufflevector(a, tail_words, 0, 1, 8, 9, 2, 3, 10, 11),
+                               __builtin_shufflevector(b, tail_words, 0, 1, 8, 9, 2, 3, 10, 11),
+                               __builtin_shufflevector(a, tail_words, 4, 5, 12, 13, 6, 7, 14, 15),
+                               __builtin_shufflevector(b, tail_words, 4, 5, 12, 13, 6, 7, 14, 15)};
+      store_vectors<2 * kLevels>(out + 4 * kLevels * p, events);
+    }
+    window_.stored();
+  }
+  // The first kCount of the vectors, two whole events each, into out[0..2 kCount): streamed when
+  // the window streams, 32 bytes a store where `out` allows it (the usual case: quads record even
+  // numbers of events), else 16.
+  template <int kCount, typename Vector>
+  [[gnu::always_inline]] __attribute__((target("avx2"))) void store_vectors(TexelAccess* out,
+                                                                            const Vector (&events)[4]) {
+    if (window_.streaming()) {
+      const auto at = reinterpret_cast<std::uintptr_t>(out);
+      if (at % 32 == 0) {
+        for (int i = 0; i < kCount; ++i)
+          _mm256_stream_si256(reinterpret_cast<__m256i*>(out) + i, reinterpret_cast<__m256i>(events[i]));
+        return;
+      }
+      if (at % 16 == 0) {
+        for (int i = 0; i < kCount; ++i) {
+          const __m256i v = reinterpret_cast<__m256i>(events[i]);
+          _mm_stream_si128(reinterpret_cast<__m128i*>(out) + 2 * i, _mm256_castsi256_si128(v));
+          _mm_stream_si128(reinterpret_cast<__m128i*>(out) + 2 * i + 1, _mm256_extracti128_si256(v, 1));
+        }
+        return;
+      }
+    }
+    std::memcpy(static_cast<void*>(out), events, kCount * sizeof events[0]);
+  }
+#endif
   // Whole events' words into `out`. Streamed when the window streams: 16 bytes a store from a
   // 16-byte boundary, the word before it and any word after it 8 bytes a store (8-byte stores
   // alone made the grazing plane's traced frame 5% slower than this). Else as 16-byte vectors
@@ -156,7 +273,7 @@ class TexelRecorder {
 
   EventSink* sink_;
   std::uint64_t reads_ = 0;
-  EventWindow<TexelAccess, kCapacity, 4> window_;  // 4: record_footprint's slack
+  EventWindow<TexelAccess, kCapacity, 32> window_;  // 32: record_quad's slack
 };
 
 }  // namespace rastrace

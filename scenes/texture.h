@@ -11,6 +11,10 @@
 
 namespace rastrace {
 
+// The widest and tallest texture the renderer takes: texel events (traces/events.h) hold 16-bit
+// texel coordinates. (GL implementations allow 16384 or 32768.)
+inline constexpr std::uint32_t kMaxTextureSide = 65536;
+
 struct Image {
   int width = 0;
   int height = 0;
@@ -24,8 +28,8 @@ struct Image {
 
 struct Texture {
   std::string name;
-  std::vector<Image> levels;  // levels[0] is the base; each next level halves with floor, to 1x1
-  TextureFormat format = TextureFormat::Rgba8;  // how the texels are stored in memory
+  std::vector<Image> levels;                      // levels[0] is the base; each next level halves with floor, to 1x1
+  TextureFormat format = TextureFormat::Rgba8;    // how the texels are stored in memory
   std::vector<std::vector<std::uint8_t>> blocks;  // per level, when compressed: the encoded level
 };
 

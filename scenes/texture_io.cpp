@@ -10,9 +10,9 @@
 #include <OpenImageIO/imageio.h>
 
 #include "core/error.h"
-#include "texcodec/codec.h"
 #include "core/input_guard.h"
 #include "scenes/text_parse.h"
+#include "texcodec/codec.h"
 
 namespace rastrace {
 
@@ -24,6 +24,11 @@ Image decode(OIIO::ImageInput& input, const std::string& name) {
   if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1 || spec.depth > 1)
     throw_in_file(name, "image of " + std::to_string(spec.width) + "x" + std::to_string(spec.height) + "x" +
                             std::to_string(spec.nchannels) + " channels: expected a 2D image with 1 to 4 channels");
+  if (static_cast<std::uint64_t>(spec.width) > kMaxTextureSide ||
+      static_cast<std::uint64_t>(spec.height) > kMaxTextureSide)
+    throw_in_file(name, "image of " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
+                            " texels: expected at most " + std::to_string(kMaxTextureSide) +
+                            " texels a side (texel events hold 16-bit coordinates)");
   if (static_cast<std::uint64_t>(spec.width) * static_cast<std::uint64_t>(spec.height) > (std::uint64_t{1} << 28))
     throw_in_file(name, "image of " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
                             " texels: expected at most 2^28 texels");

@@ -96,8 +96,8 @@ bool open_runs(Cursor& c, std::size_t n, const char* what, Column& col) {
     empty_run |= c.p[r] == 0;
   }
   if (empty_run || total != n) {
-    c.error = std::string("run lengths ") + (empty_run ? "include 0" : "add up to " + std::to_string(total)) +
-              " for " + std::to_string(n) + " records in the " + what + " column";
+    c.error = std::string("run lengths ") + (empty_run ? "include 0" : "add up to " + std::to_string(total)) + " for " +
+              std::to_string(n) + " records in the " + what + " column";
     return false;
   }
   col.lengths = c.p + 1;
@@ -146,7 +146,9 @@ bool open_column(Cursor& c, std::size_t n, std::uint64_t limit, const char* what
 std::string column_error(const Column& col) {
   if ((col.mode == kEscapedBytes || col.mode == kRuns) && (col.overrun || col.exceptions != col.exceptions_end))
     return std::string("escaped deltas do not match their escapes in the ") + col.what + " column";
-  if (col.all > col.limit) return std::string("a value in the ") + col.what + " column is out of range";
+  if (col.all > col.limit)
+    return std::string("a value in the ") + col.what + " column is out of range (at most " + std::to_string(col.limit) +
+           ")";
   return "";
 }
 
@@ -371,7 +373,7 @@ void decode_bytes_lane(Column& col, std::uint32_t* lane, std::size_t count) {
     col.deltas += done;
     i += done;
     if (!escapes || i + 8 > count || !has_escape(col.deltas)) break;  // without AVX2: done = 0, no escape
-    decode_into(col, LaneOut{lane}, i, i + 8);  // an escape among the next eight
+    decode_into(col, LaneOut{lane}, i, i + 8);                        // an escape among the next eight
     i += 8;
   }
   decode_into(col, LaneOut{lane}, i, count);
@@ -402,8 +404,13 @@ void decode_bytes_lane(Column& col, std::uint32_t* lane, std::size_t count) {
 RASTRACE_CLONES("avx2", "default")
 void decode_texel_blocks(Column* col, int decoded, bool details, TexelAccess* out, std::size_t n) {
   alignas(64) std::uint32_t lanes[7][kLaneSize];
-  const TexelLanes block{lanes[0], lanes[1], lanes[2], lanes[3],
-                         details ? lanes[4] : nullptr, details ? lanes[5] : nullptr, details ? lanes[6] : nullptr};
+  const TexelLanes block{lanes[0],
+                         lanes[1],
+                         lanes[2],
+                         lanes[3],
+                         details ? lanes[4] : nullptr,
+                         details ? lanes[5] : nullptr,
+                         details ? lanes[6] : nullptr};
   for (std::size_t begin = 0; begin < n; begin += kBlock) {
     const std::size_t count = std::min<std::size_t>(n - begin, kBlock);
     const std::size_t first = begin == 0;  // record 0 is every column's first value
@@ -445,13 +452,14 @@ void encode_vertex_records(const DrawInfo& draw, std::span<const VertexFetch> f,
   const bool strip = draw.type == PrimitiveType::TriangleStrip;
   const bool restarts = strip && draw.restart_index.has_value();
   append_bytes<std::uint8_t>(raw, static_cast<std::uint8_t>(static_cast<std::uint8_t>(draw.type) |
-                                                   (strip && !restarts ? kStripWithoutRestart : 0)));
+                                                            (strip && !restarts ? kStripWithoutRestart : 0)));
   append_bytes<std::uint32_t>(raw, restarts ? *draw.restart_index : kStripRestart);
   put_column(raw, gather(scratch.lanes, f, [](const VertexFetch& r) { return r.vertex; })[0], scratch);
   const std::size_t start = raw.size();
   raw.resize(start + (f.size() + 7) / 8, 0);
   char* bitmap = raw.data() + start;
-  for (std::size_t i = 0; i < f.size(); ++i) bitmap[i / 8] = static_cast<char>(bitmap[i / 8] | (f[i].primitive_start << (i % 8)));
+  for (std::size_t i = 0; i < f.size(); ++i)
+    bitmap[i / 8] = static_cast<char>(bitmap[i / 8] | (f[i].primitive_start << (i % 8)));
 }
 
 void encode_texel_records(std::span<const TexelAccess> t, std::string& raw, ColumnScratch& scratch) {
@@ -477,8 +485,7 @@ void encode_address_records(std::span<const AddressAccess> a, std::string& raw, 
   put_column(raw, gather(scratch.lanes, a, [](const AddressAccess& r) { return std::uint32_t{r.label}; })[0], scratch);
 }
 
-void encode_framebuffer_records(std::span<const FramebufferAccess> f, std::string& raw,
-                                ColumnScratch& scratch) {
+void encode_framebuffer_records(std::span<const FramebufferAccess> f, std::string& raw, ColumnScratch& scratch) {
   raw.clear();
   const auto lanes = gather(
       scratch.lanes, f, [](const FramebufferAccess& r) { return std::uint32_t{r.x}; },
@@ -544,7 +551,8 @@ std::string decode_texel_records(std::span<const std::uint8_t> raw, std::uint32_
                                  bool details, bool runs) {
   Cursor c{raw.data(), raw.data() + raw.size(), {}};
   Column col[7];
-  const std::uint64_t limits[7] = {0xFFFFFFFFu, 0xFFu, 0xFFFFFFFFu, 0xFFFFFFFFu, 0xFFFFu, 0xFFFFu, 0xFFFFFFFFu};
+  // TexelAccess's field widths: 16 bits but for the level (8) and the triangle (32).
+  const std::uint64_t limits[7] = {0xFFFFu, 0xFFu, 0xFFFFu, 0xFFFFu, 0xFFFFu, 0xFFFFu, 0xFFFFFFFFu};
   const char* names[7] = {"texture", "level", "x", "y", "pixel x", "pixel y", "triangle"};
   // Columns after a damaged header are not decoded; the ones before it are, and their errors
   // come first (the order a column-by-column decoder would report them in).
@@ -601,8 +609,8 @@ std::string decode_framebuffer_records(std::span<const std::uint8_t> raw, std::u
   return "";
 }
 
-std::string decode_address_records(std::span<const std::uint8_t> raw, std::uint32_t n,
-                                   std::vector<AddressAccess>& out, bool runs) {
+std::string decode_address_records(std::span<const std::uint8_t> raw, std::uint32_t n, std::vector<AddressAccess>& out,
+                                   bool runs) {
   Cursor c{raw.data(), raw.data() + raw.size(), {}};
   Column address, label;
   if (!open_column(c, n, ~std::uint64_t{0}, "address", address, runs)) return c.error;

@@ -2,7 +2,7 @@
 // field of every record, gathered into a contiguous lane, encoded in the smallest of the column
 // modes. The encoder works on lanes rather than on the records themselves so that each of its
 // passes (counting deltas, finding changes, writing deltas) reads 4 or 8 bytes a record in
-// order, in vector lanes where the compiler can, instead of striding across 24-byte records once
+// order, in vector lanes where the compiler can, instead of striding across 16-byte records once
 // per pass: a trace file's writer encodes every event of a frame, and this is half its work.
 #pragma once
 
@@ -25,8 +25,8 @@ inline constexpr std::uint64_t kLongestRun = 0xFF;   // a longer run is stored a
 struct ColumnScratch {
   std::vector<std::uint32_t> lanes;
   std::vector<std::uint64_t> wide_lane;  // a 64-bit field (addresses)
-  std::vector<std::uint32_t> changes;  // the records where a column's value changes
-  std::vector<char> runs;              // a column's run lengths at [0, n), deltas at [n, 2n), escapes after
+  std::vector<std::uint32_t> changes;    // the records where a column's value changes
+  std::vector<char> runs;                // a column's run lengths at [0, n), deltas at [n, 2n), escapes after
 };
 
 // Records a column may hold (a chunk holds at most kMaxChunkRecords).

@@ -101,7 +101,9 @@ class EventWindow {
     if (!streaming_) prefetch(out);
     return out;
   }
-  void stored() {
+  // Inlined whatever the caller's size: called from the quad loop, a call would spill every
+  // live vector register around it.
+  [[gnu::always_inline]] void stored() {
     if (size_ >= limit_) [[unlikely]]
       overflow();
   }
@@ -150,7 +152,7 @@ class EventWindow {
 #endif
     sink_calls::commit(*sink_, used, kind());
   }
-  void overflow() {
+  [[gnu::noinline]] void overflow() {
     if (!lends_) {
       sink_calls::deliver(*sink_, std::span<const Event>(buffer_.data(), kCapacity));
       size_ -= kCapacity;

@@ -25,12 +25,17 @@ struct VertexFetch {
   bool primitive_start = false;
 };
 
-// One texel read by the sampler.
+// One texel read by the sampler. 16 bytes: a trilinear frame records millions of reads, and with
+// 32-bit texture numbers and coordinates (24 bytes) tracing the grazing plane to memory was
+// bound by writing them. Texture numbers and texel coordinates are therefore below 65536: the
+// renderer accepts at most kMaxTracedTextures textures, each at most kMaxTextureSide
+// (scenes/texture.h) texels a side, and the trace reader rejects larger values.
+inline constexpr std::uint32_t kMaxTracedTextures = 65536;
 struct TexelAccess {
-  std::uint32_t texture = 0;
-  std::uint8_t level = 0;
-  std::uint32_t x = 0;  // texel column, 0 at the left
-  std::uint32_t y = 0;  // texel row, 0 at the top of the image
+  std::uint16_t texture = 0;
+  std::uint8_t level = 0;  // one padding byte follows, written 0 by the recorder and decoder
+  std::uint16_t x = 0;     // texel column, 0 at the left
+  std::uint16_t y = 0;     // texel row, 0 at the top of the image
   std::uint16_t pixel_x = 0;
   std::uint16_t pixel_y = 0;
   std::uint32_t triangle = 0;  // the drawn triangle's number within the frame
@@ -49,7 +54,7 @@ struct FramebufferAccess {
   std::uint16_t x = 0;  // the quad's top-left pixel (even coordinates)
   std::uint16_t y = 0;
   FramebufferOp op = FramebufferOp::DepthRead;
-  std::uint8_t mask = 0;  // the pixels concerned: bit 0 (x, y), 1 (x+1, y), 2 (x, y+1), 3 (x+1, y+1)
+  std::uint8_t mask = 0;       // the pixels concerned: bit 0 (x, y), 1 (x+1, y), 2 (x, y+1), 3 (x+1, y+1)
   std::uint32_t triangle = 0;  // the drawn triangle's number within the frame
 };
 

@@ -2,7 +2,7 @@
 // pixel x, pixel y, triangle), field k of record i at lanes[k * capacity + i]. A trace writer
 // fills its open texel chunk this way as batches arrive, while each batch is still in the
 // renderer's cache, so that its compression threads read the lanes directly instead of first
-// transposing 24-byte records that have gone cold by the time they get them.
+// transposing 16-byte records that have gone cold by the time they get them.
 #pragma once
 
 #include <cstddef>

@@ -14,27 +14,25 @@
 namespace rastrace {
 namespace {
 
-// The record as six little-endian 32-bit words: texture | level and 3 zero bytes | x | y |
-// pixel_x and pixel_y | triangle. Both paths below write exactly these bytes.
-static_assert(std::is_trivially_copyable_v<TexelAccess> && sizeof(TexelAccess) == 24);
-static_assert(offsetof(TexelAccess, texture) == 0 && offsetof(TexelAccess, level) == 4 &&
-              offsetof(TexelAccess, x) == 8 && offsetof(TexelAccess, y) == 12 &&
-              offsetof(TexelAccess, pixel_x) == 16 && offsetof(TexelAccess, pixel_y) == 18 &&
-              offsetof(TexelAccess, triangle) == 20);
+// The record as four little-endian 32-bit words: texture and level (a zero byte after it) | x and
+// y | pixel_x and pixel_y | triangle. Both paths below write exactly these bytes.
+static_assert(std::is_trivially_copyable_v<TexelAccess> && sizeof(TexelAccess) == 16);
+static_assert(offsetof(TexelAccess, texture) == 0 && offsetof(TexelAccess, level) == 2 &&
+              offsetof(TexelAccess, x) == 4 && offsetof(TexelAccess, y) == 6 && offsetof(TexelAccess, pixel_x) == 8 &&
+              offsetof(TexelAccess, pixel_y) == 10 && offsetof(TexelAccess, triangle) == 12);
 
 void interleave_words(const TexelLanes& l, std::size_t begin, std::size_t count, TexelAccess* out) {
   for (std::size_t i = begin; i < count; ++i) {
     if constexpr (std::endian::native == std::endian::little) {
-      const std::uint32_t pixel = l.pixel_x ? (l.pixel_x[i] & 0xFFFFu) | (l.pixel_y[i] << 16) : 0;
-      const std::uint64_t words[3] = {l.texture[i] | std::uint64_t{l.level[i] & 0xFFu} << 32,
-                                      l.x[i] | std::uint64_t{l.y[i]} << 32,
-                                      pixel | std::uint64_t{l.triangle ? l.triangle[i] : 0} << 32};
+      const std::uint32_t words[4] = {
+          (l.texture[i] & 0xFFFFu) | (l.level[i] & 0xFFu) << 16, (l.x[i] & 0xFFFFu) | l.y[i] << 16,
+          l.pixel_x ? (l.pixel_x[i] & 0xFFFFu) | (l.pixel_y[i] << 16) : 0, l.triangle ? l.triangle[i] : 0};
       std::memcpy(static_cast<void*>(out + i), words, sizeof(words));
     } else {
-      out[i] = TexelAccess{l.texture[i],
+      out[i] = TexelAccess{static_cast<std::uint16_t>(l.texture[i]),
                            static_cast<std::uint8_t>(l.level[i]),
-                           l.x[i],
-                           l.y[i],
+                           static_cast<std::uint16_t>(l.x[i]),
+                           static_cast<std::uint16_t>(l.y[i]),
                            static_cast<std::uint16_t>(l.pixel_x ? l.pixel_x[i] : 0),
                            static_cast<std::uint16_t>(l.pixel_y ? l.pixel_y[i] : 0),
                            l.triangle ? l.triangle[i] : 0};
@@ -47,40 +45,37 @@ __attribute__((target("avx2"))) inline __m256i load(const std::uint32_t* p) {
   return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p));
 }
 
+// Two 16-bit halves of each 32-bit lane: lo's low 16 bits, then hi's.
+__attribute__((target("avx2"))) inline __m256i halves(__m256i lo, __m256i hi) {
+  return _mm256_or_si256(_mm256_and_si256(lo, _mm256_set1_epi32(0xFFFF)), _mm256_slli_epi32(hi, 16));
+}
+
 // Records [0, returned) in groups of eight; the rest is interleave_words'.
-__attribute__((target("avx2"))) std::size_t interleave_avx2(const TexelLanes& l, std::size_t count,
-                                                             TexelAccess* out) {
-  const __m256i byte = _mm256_set1_epi32(0xFF), half = _mm256_set1_epi32(0xFFFF), zero = _mm256_setzero_si256();
+__attribute__((target("avx2"))) std::size_t interleave_avx2(const TexelLanes& l, std::size_t count, TexelAccess* out) {
+  const __m256i byte = _mm256_set1_epi32(0xFF), zero = _mm256_setzero_si256();
   const bool details = l.pixel_x != nullptr;
   std::size_t i = 0;
   for (; i + 8 <= count; i += 8) {
-    const __m256i t = load(l.texture + i), v = _mm256_and_si256(load(l.level + i), byte);
-    const __m256i x = load(l.x + i), y = load(l.y + i);
-    __m256i p = zero, r = zero;
+    // Word k of records 0-7, one record a lane.
+    const __m256i a = halves(load(l.texture + i), _mm256_and_si256(load(l.level + i), byte));
+    const __m256i b = halves(load(l.x + i), load(l.y + i));
+    __m256i c = zero, d = zero;
     if (details) {
-      p = _mm256_or_si256(_mm256_and_si256(load(l.pixel_x + i), half), _mm256_slli_epi32(load(l.pixel_y + i), 16));
-      r = load(l.triangle + i);
+      c = halves(load(l.pixel_x + i), load(l.pixel_y + i));
+      d = load(l.triangle + i);
     }
-    // Pairs of words as 64-bit lanes: a_k = (texture, level), c_k = (x, y), e_k = (pixel, triangle)
-    // of record k; unpack works within 128-bit halves, so records 4-7 sit in the upper halves.
-    const __m256i a01 = _mm256_unpacklo_epi32(t, v), a23 = _mm256_unpackhi_epi32(t, v);  // a0 a1 | a4 a5
-    const __m256i c01 = _mm256_unpacklo_epi32(x, y), c23 = _mm256_unpackhi_epi32(x, y);
-    const __m256i e01 = _mm256_unpacklo_epi32(p, r), e23 = _mm256_unpackhi_epi32(p, r);
-    // Record k is a_k c_k e_k: the 24 64-bit lanes of 8 records are a0 c0 e0 a1 | c1 e1 a2 c2 |
-    // e2 a3 c3 e3 | then the same for records 4-7.
-    const __m256i u0 = _mm256_unpacklo_epi64(a01, c01);      // a0 c0 | a4 c4
-    const __m256i u1 = _mm256_blend_epi32(e01, a01, 0xCC);   // e0 a1 | e4 a5
-    const __m256i u2 = _mm256_unpackhi_epi64(c01, e01);      // c1 e1 | c5 e5
-    const __m256i u3 = _mm256_unpacklo_epi64(a23, c23);      // a2 c2 | a6 c6
-    const __m256i u4 = _mm256_blend_epi32(e23, a23, 0xCC);   // e2 a3 | e6 a7
-    const __m256i u5 = _mm256_unpackhi_epi64(c23, e23);      // c3 e3 | c7 e7
+    // A 4x4 transposition within each 128-bit half: records 0-3 in the low halves, 4-7 in the high.
+    const __m256i ab01 = _mm256_unpacklo_epi32(a, b), ab23 = _mm256_unpackhi_epi32(a, b);
+    const __m256i cd01 = _mm256_unpacklo_epi32(c, d), cd23 = _mm256_unpackhi_epi32(c, d);
+    const __m256i r0 = _mm256_unpacklo_epi64(ab01, cd01);  // record 0 | record 4
+    const __m256i r1 = _mm256_unpackhi_epi64(ab01, cd01);  // record 1 | record 5
+    const __m256i r2 = _mm256_unpacklo_epi64(ab23, cd23);  // record 2 | record 6
+    const __m256i r3 = _mm256_unpackhi_epi64(ab23, cd23);  // record 3 | record 7
     auto* o = reinterpret_cast<__m256i*>(static_cast<void*>(out + i));
-    _mm256_storeu_si256(o + 0, _mm256_permute2x128_si256(u0, u1, 0x20));
-    _mm256_storeu_si256(o + 1, _mm256_permute2x128_si256(u2, u3, 0x20));
-    _mm256_storeu_si256(o + 2, _mm256_permute2x128_si256(u4, u5, 0x20));
-    _mm256_storeu_si256(o + 3, _mm256_permute2x128_si256(u0, u1, 0x31));
-    _mm256_storeu_si256(o + 4, _mm256_permute2x128_si256(u2, u3, 0x31));
-    _mm256_storeu_si256(o + 5, _mm256_permute2x128_si256(u4, u5, 0x31));
+    _mm256_storeu_si256(o + 0, _mm256_permute2x128_si256(r0, r1, 0x20));
+    _mm256_storeu_si256(o + 1, _mm256_permute2x128_si256(r2, r3, 0x20));
+    _mm256_storeu_si256(o + 2, _mm256_permute2x128_si256(r0, r1, 0x31));
+    _mm256_storeu_si256(o + 3, _mm256_permute2x128_si256(r2, r3, 0x31));
   }
   return i;
 }
@@ -88,9 +83,10 @@ __attribute__((target("avx2"))) std::size_t interleave_avx2(const TexelLanes& l,
 // Eight records: the zig-zag bytes as signed 32-bit deltas, their prefix sums added to `base`
 // (eight copies of the value before them) and stored; `base` moves on by the eight deltas' sum
 // (found apart from it: one addition is all that each group waits for from the one before).
-__attribute__((target("avx2"))) inline void add_eight(std::uint64_t zigzag, __m256i& base, __m256i& wrap,
-                                                      __m256i& ored, std::uint32_t* lane) {
-  const std::uint64_t signed_bytes = ((zigzag >> 1) & 0x7F7F7F7F7F7F7F7Full) ^ ((zigzag & 0x0101010101010101ull) * 0xFF);
+__attribute__((target("avx2"))) inline void add_eight(std::uint64_t zigzag, __m256i& base, __m256i& wrap, __m256i& ored,
+                                                      std::uint32_t* lane) {
+  const std::uint64_t signed_bytes =
+      ((zigzag >> 1) & 0x7F7F7F7F7F7F7F7Full) ^ ((zigzag & 0x0101010101010101ull) * 0xFF);
   const __m256i d = _mm256_cvtepi8_epi32(_mm_cvtsi64_si128(static_cast<long long>(signed_bytes)));
   __m256i s = _mm256_add_epi32(d, _mm256_slli_si256(d, 4));  // prefix sums within each half
   s = _mm256_add_epi32(s, _mm256_slli_si256(s, 8));
@@ -108,8 +104,8 @@ __attribute__((target("avx2"))) inline void add_eight(std::uint64_t zigzag, __m2
 }
 
 __attribute__((target("avx2"))) std::size_t add_byte_deltas_avx2(const std::uint8_t* deltas, std::size_t count,
-                                                                  bool escapes, ByteDeltaSums& sums,
-                                                                  std::uint32_t* lane) {
+                                                                 bool escapes, ByteDeltaSums& sums,
+                                                                 std::uint32_t* lane) {
   __m256i base = _mm256_set1_epi32(static_cast<int>(sums.value));
   __m256i wrap = _mm256_setzero_si256(), ored = _mm256_setzero_si256();
   std::size_t i = 0;

@@ -3,10 +3,10 @@
 // interleaved into TexelAccess records:
 //   add_byte_deltas()    a column of 1-byte zig-zag deltas (modes 1 and 0x81, chunk_codec.h) as
 //                        prefix sums, eight records at a time;
-//   interleave_texels()  the lanes into records, each record written once (24 bytes) instead of
+//   interleave_texels()  the lanes into records, each record written once (16 bytes) instead of
 //                        a store per field.
 // Both use AVX2 where the machine has it; elsewhere add_byte_deltas() does nothing (the caller's
-// scalar decoder does the work) and a record is interleaved as three 8-byte stores.
+// scalar decoder does the work) and a record is interleaved as four 4-byte words.
 #pragma once
 
 #include <cstddef>
@@ -36,7 +36,7 @@ std::size_t add_byte_deltas(const std::uint8_t* deltas, std::size_t count, bool 
                             std::uint32_t* lane);
 
 // One block of decoded columns, `count` records each. Values are truncated to their field's width
-// (level to 8 bits, pixel_x and pixel_y to 16: a column out of range is reported by its decoder,
+// (level to 8 bits, the others but the triangle to 16: a column out of range is reported by its decoder,
 // which then drops the records). pixel_x, pixel_y and triangle may be null: the fields are then 0.
 struct TexelLanes {
   const std::uint32_t* texture = nullptr;
@@ -48,7 +48,7 @@ struct TexelLanes {
   const std::uint32_t* triangle = nullptr;
 };
 
-// Writes records out[0..count) from the lanes (the padding bytes after `level` are written 0).
+// Writes records out[0..count) from the lanes (the padding byte after `level` is written 0).
 void interleave_texels(const TexelLanes& lanes, std::size_t count, TexelAccess* out);
 // The same without SIMD, whatever the machine (for tests comparing the two).
 void interleave_texels_portable(const TexelLanes& lanes, std::size_t count, TexelAccess* out);

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <charconv>
-#include <iterator>
 #include <fstream>
+#include <iterator>
+#include <limits>
+#include <string>
 #include <vector>
 
 #include "core/error.h"
@@ -79,7 +81,8 @@ T number(std::string_view text, const std::string& file, std::uint64_t line, con
   if (text.empty() || ec != std::errc() || end != text.data() + text.size())
     throw_at_line(file, line,
                   std::string("column ") + column + ": '" + std::string(text) + "' is not " +
-                      (base == 16 ? "a hexadecimal" : "an unsigned") + " number in range");
+                      (base == 16 ? "a hexadecimal" : "an unsigned") + " number in range (0 to " +
+                      std::to_string(std::uint64_t{std::numeric_limits<T>::max()}) + ")");
   return value;
 }
 
@@ -142,8 +145,9 @@ void import_csv(const std::string& path, EventSink& sink) {
     }
     const auto f = fields(text);
     if (f.size() != columns)
-      throw_at_line(path, line,
-                    "expected " + std::to_string(columns) + " comma-separated fields, found " + std::to_string(f.size()));
+      throw_at_line(
+          path, line,
+          "expected " + std::to_string(columns) + " comma-separated fields, found " + std::to_string(f.size()));
     const auto* op = std::find(std::begin(kFramebufferEvents), std::end(kFramebufferEvents), f[0]);
     if (f[0] == "begin_draw") {
       flush();
@@ -181,10 +185,10 @@ void import_csv(const std::string& path, EventSink& sink) {
     } else if (f[0] == "texel") {
       if (!vertices.empty() || !addresses.empty() || !framebuffer.empty()) flush();
       TexelAccess t;
-      t.texture = number<std::uint32_t>(f[6], path, line, "texture");
+      t.texture = number<std::uint16_t>(f[6], path, line, "texture");
       t.level = number<std::uint8_t>(f[7], path, line, "level");
-      t.x = number<std::uint32_t>(f[8], path, line, "x");
-      t.y = number<std::uint32_t>(f[9], path, line, "y");
+      t.x = number<std::uint16_t>(f[8], path, line, "x");
+      t.y = number<std::uint16_t>(f[9], path, line, "y");
       t.pixel_x = number<std::uint16_t>(f[10], path, line, "pixel_x");
       t.pixel_y = number<std::uint16_t>(f[11], path, line, "pixel_y");
       t.triangle = number<std::uint32_t>(f[12], path, line, "triangle");

@@ -1,7 +1,7 @@
 // open_trace: a rastrace trace file read chunk by chunk (traces/trace_reader.h, the reader
 // `replay` and `sweep` use), each chunk's records as a numpy structured array:
 //   vertex   vertex u4, primitive_start ?       (the chunk names its draw and primitive type)
-//   texel    texture u4, level u1, x u4, y u4, pixel_x u2, pixel_y u2, triangle u4
+//   texel    texture u2, level u1, x u2, y u2, pixel_x u2, pixel_y u2, triangle u4
 //   address  address u8, label u1
 #include <cstring>
 #include <memory>
@@ -48,8 +48,7 @@ struct FramebufferRecord {
 py::array framebuffer_array(const std::vector<FramebufferAccess>& records) {
   py::array_t<FramebufferRecord> array(static_cast<py::ssize_t>(records.size()));
   FramebufferRecord* out = array.mutable_data();
-  for (const FramebufferAccess& r : records)
-    *out++ = {r.x, r.y, static_cast<std::uint8_t>(r.op), r.mask, r.triangle};
+  for (const FramebufferAccess& r : records) *out++ = {r.x, r.y, static_cast<std::uint8_t>(r.op), r.mask, r.triangle};
   return array;
 }
 
@@ -222,10 +221,10 @@ void bind_traces(py::module_& m) {
       "open_trace", [](const std::string& path) { return TraceFile(path); }, py::arg("path"),
       "Opens a rastrace trace (written by render(trace=...) or `rastrace render --trace`). Iterate it\n"
       "for its chunks (TraceChunk: kind, records as a numpy structured array: vertex (vertex,\n"
-      "primitive_start), texel (texture, level, x, y, pixel_x, pixel_y, triangle), address (address,\n"
-      "label), framebuffer (x, y of the quad, op 0 depth read / 1 depth write / 2 colour write, mask,\n"
-      "triangle)), or read(kind) for all records of a kind. Errors (truncated file, bad checksum) name\n"
-      "the file, the chunk and its offset.");
+      "primitive_start), texel (texture, level, x, y, pixel_x, pixel_y: 16 bits but level 8; triangle),\n"
+      "address (address, label), framebuffer (x, y of the quad, op 0 depth read / 1 depth write /\n"
+      "2 colour write, mask, triangle)), or read(kind) for all records of a kind. Errors (truncated\n"
+      "file, bad checksum) name the file, the chunk and its offset.");
 }
 
 }  // namespace rastrace::python

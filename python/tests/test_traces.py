@@ -38,6 +38,9 @@ def test_trace_equals_its_csv_export(bunny_trace, tmp_path):
 
     whole = trace.read("texel")
     assert whole.dtype.names == ("texture", "level", "x", "y", "pixel_x", "pixel_y", "triangle")
+    # The C++ TexelAccess, 16 bytes: 16-bit texture numbers and texel coordinates.
+    assert whole.dtype.itemsize == 16
+    assert [whole.dtype[name] for name in whole.dtype.names] == [np.dtype(t) for t in ("u2", "u1", "u2", "u2", "u2", "u2", "u4")]
     assert len(whole) == len(texel_rows) and tuple(whole[-1].tolist()) == texel_rows[-1]
     assert trace.metadata["scene"] == "builtin:bunny"
 

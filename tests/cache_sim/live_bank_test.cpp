@@ -112,9 +112,10 @@ TEST(LiveBankSink, ReplayingTheWrittenTraceGivesTheLiveStatisticsExactly) {
         const std::uint32_t x = (px * 3 / 2) >> level, y = (py + px / 3) >> level;
         for (std::uint32_t dy = 0; dy < 2; ++dy)
           for (std::uint32_t dx = 0; dx < 2; ++dx)
-            texels.push_back({tex, level, std::min(x + dx, textures[tex][level].width - 1),
-                              std::min(y + dy, textures[tex][level].height - 1), static_cast<std::uint16_t>(px),
-                              static_cast<std::uint16_t>(py), py});
+            texels.push_back({static_cast<std::uint16_t>(tex), level,
+                              static_cast<std::uint16_t>(std::min(x + dx, textures[tex][level].width - 1)),
+                              static_cast<std::uint16_t>(std::min(y + dy, textures[tex][level].height - 1)),
+                              static_cast<std::uint16_t>(px), static_cast<std::uint16_t>(py), py});
       }
     live.texel_accesses(texels);
     writer.texel_accesses(texels);

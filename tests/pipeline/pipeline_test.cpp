@@ -1,5 +1,6 @@
 // The geometry pipeline: primitive assembly, vertex cache and shader invocations, events,
 // culling, clipping, errors.
+#include <span>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "core/error.h"
 #include "pipeline/pipeline.h"
 #include "scenes/procedural.h"
+#include "scenes/texture.h"
 #include "tests/support/test_data.h"
 #include "tests/support/test_meshes.h"
 #include "traces/memory_sink.h"
@@ -253,6 +255,42 @@ TEST(Pipeline, GouraudLightingMatchesTheFixedFunctionFormula) {
   EXPECT_FLOAT_EQ(shader.shade(glm::vec3(0), &facing, nullptr).light, 1.25f);
   EXPECT_FLOAT_EQ(shader.shade(glm::vec3(0), &tilted, nullptr).light, 0.25f + 0.8f);
   EXPECT_FLOAT_EQ(shader.shade(glm::vec3(0), &away, nullptr).light, 0.25f);
+}
+
+// Texel events hold 16-bit texture numbers and texel coordinates: a draw that could record more
+// is refused before anything is drawn, naming the material and the limit.
+TEST(Pipeline, TexturesBeyondWhatTexelEventsHoldAreInputErrors) {
+  Mesh mesh = strip_row(2);
+  mesh.uvs.assign(mesh.positions.size(), glm::vec2(0.5f));
+  mesh.materials.resize(1);
+  Framebuffer fb(8, 8);
+  const auto draw_with = [&](std::span<const Texture> textures) -> std::string {
+    Pipeline pipeline(fb, PipelineOptions{}, nullptr);
+    try {
+      pipeline.draw(mesh, glm::mat4(1.0f), DrawCall{}, textures);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  Texture wide;
+  wide.name = "wide";
+  wide.levels.push_back(Image{65537, 1, std::vector<std::uint8_t>(65537 * 4, 255)});
+  mesh.materials[0].texture = 0;
+  EXPECT_EQ(draw_with(std::span(&wide, 1)),
+            "test mesh: material 0 uses texture 'wide' of 65537x1 texels: expected at most 65536 a side (texel "
+            "events hold 16-bit coordinates)");
+  wide.levels[0] = Image{65536, 1, std::vector<std::uint8_t>(65536 * 4, 255)};  // the widest allowed
+  EXPECT_EQ(draw_with(std::span(&wide, 1)), "");
+
+  std::vector<Texture> many(65537);
+  for (Texture& t : many) t.levels.push_back(Image{1, 1, {255, 255, 255, 255}});
+  mesh.materials[0].texture = 65536;
+  EXPECT_EQ(draw_with(many),
+            "test mesh: material 0 uses texture 65536: expected at most 65536 textures (texel events number them in "
+            "16 bits)");
+  mesh.materials[0].texture = 65535;
+  EXPECT_EQ(draw_with(many), "");
 }
 
 TEST(Pipeline, IndexOutOfRangeIsAnInputErrorNamingThePlace) {

@@ -70,10 +70,11 @@ class CallDigestSink final : public EventSink {
     digest.add<std::uint8_t>(3);
     digest.add<std::uint64_t>(accesses.size());
     for (const TexelAccess& t : accesses) {
-      digest.add(t.texture);
+      // 32 bits each, as the fields were when the digests were pinned.
+      digest.add<std::uint32_t>(t.texture);
       digest.add(t.level);
-      digest.add(t.x);
-      digest.add(t.y);
+      digest.add<std::uint32_t>(t.x);
+      digest.add<std::uint32_t>(t.y);
       digest.add(t.pixel_x);
       digest.add(t.pixel_y);
       digest.add(t.triangle);

@@ -1,7 +1,7 @@
-// The recorder writes events as words: with streaming stores into a MemorySink (from either
-// 16-byte phase, as single events shift it), with ordinary ones into storage lent by a sink that
-// does not stream and into the batch buffer. All three must hold the same events, byte for byte,
-// padding included, as the recorder's calls describe them.
+// The recorder writes events as words, and a whole quad's footprints as vectors: with streaming
+// stores into a MemorySink, with ordinary ones into storage lent by a sink that does not stream
+// and into the batch buffer. All three must hold the same events, byte for byte, padding
+// included, as the recorder's calls describe them (a quad as its footprints one by one).
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -44,8 +44,8 @@ TexelAccess event(const TexelSite& site, unsigned level, int x, int y) {
   TexelAccess e;
   e.texture = site.texture;
   e.level = static_cast<std::uint8_t>(level);
-  e.x = static_cast<std::uint32_t>(x);
-  e.y = static_cast<std::uint32_t>(y);
+  e.x = static_cast<std::uint16_t>(x);
+  e.y = static_cast<std::uint16_t>(y);
   e.pixel_x = site.pixel_x;
   e.pixel_y = site.pixel_y;
   e.triangle = site.triangle;
@@ -70,7 +70,9 @@ void expect_events(const Events& got, const std::vector<TexelAccess>& want, cons
 }
 
 TEST(TexelRecorder, StreamedLentAndBatchedEventsAreTheSameBytes) {
-  for (unsigned seed = 1; seed <= 3; ++seed) {
+  // Whole quads in vector lanes (seeds 1-3) and footprint by footprint (4-6), as without AVX2.
+  for (unsigned seed = 1; seed <= 6; ++seed) {
+    TexelRecorder::use_vector_quads(seed <= 3);
     MemorySink streamed, batched;
     LendsWithoutStreaming lent;
     TeeSink tee({&batched});
@@ -83,7 +85,7 @@ TEST(TexelRecorder, StreamedLentAndBatchedEventsAreTheSameBytes) {
       // Past three spans of TexelRecorder::kCapacity, with flushes between some of them.
       for (int step = 0; step < 6000; ++step) {
         TexelSite site;
-        site.texture = random();
+        site.texture = static_cast<std::uint16_t>(random());
         site.pixel_x = static_cast<std::uint16_t>(random());
         site.pixel_y = static_cast<std::uint16_t>(random());
         site.triangle = random();
@@ -94,11 +96,40 @@ TEST(TexelRecorder, StreamedLentAndBatchedEventsAreTheSameBytes) {
         if (what < 4) {
           for (TexelRecorder* r : {&a, &b, &c}) r->record(site, level, x0, y0);
           want.push_back(event(site, level, x0, y0));
-        } else if (what < 15) {
+        } else if (what < 10) {
           for (TexelRecorder* r : {&a, &b, &c}) r->record_footprint(site, level, x0, x1, y0, y1);
           for (const TexelAccess& e : {event(site, level, x0, y0), event(site, level, x1, y0),
                                        event(site, level, x0, y1), event(site, level, x1, y1)})
             want.push_back(e);
+        } else if (what < 15) {
+          // A whole quad: pixel p's footprint in lane p (and lane p + 4 in the next level).
+          TexelRecorder::Lanes lx0, lx1, ly0, ly1;
+          for (int lane = 0; lane < 8; ++lane) {
+            lx0[lane] = static_cast<int>(random());
+            lx1[lane] = static_cast<int>(random());
+            ly0[lane] = static_cast<int>(random());
+            ly1[lane] = static_cast<int>(random());
+          }
+          const int qx = static_cast<int>(random() % 70000), qy = static_cast<int>(random() % 70000);
+          const bool trilinear = what % 2 == 0;
+          for (TexelRecorder* r : {&a, &b, &c}) {
+            if (trilinear)
+              r->record_quad<true>(site, level, qx, qy, lx0, lx1, ly0, ly1);
+            else
+              r->record_quad<false>(site, level, qx, qy, lx0, lx1, ly0, ly1);
+          }
+          for (int p = 0; p < 4; ++p) {
+            TexelSite pixel = site;
+            pixel.pixel_x = static_cast<std::uint16_t>(qx + (p & 1));
+            pixel.pixel_y = static_cast<std::uint16_t>(qy + (p >> 1));
+            for (int l = 0; l < (trilinear ? 2 : 1); ++l) {
+              const int lane = p + 4 * l;
+              for (const TexelAccess& e :
+                   {event(pixel, level + l, lx0[lane], ly0[lane]), event(pixel, level + l, lx1[lane], ly0[lane]),
+                    event(pixel, level + l, lx0[lane], ly1[lane]), event(pixel, level + l, lx1[lane], ly1[lane])})
+                want.push_back(e);
+            }
+          }
         } else {
           for (TexelRecorder* r : {&a, &b, &c}) r->flush();
         }
@@ -109,6 +140,7 @@ TEST(TexelRecorder, StreamedLentAndBatchedEventsAreTheSameBytes) {
     expect_events(streamed.texels, want, batched.texels, "streamed");
     expect_events(lent.texels, want, batched.texels, "lent");
   }
+  TexelRecorder::use_vector_quads(true);
 }
 
 }  // namespace

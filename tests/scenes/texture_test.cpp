@@ -1,4 +1,6 @@
 // Procedural textures, image loading and GL-style mip chains.
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include "core/error.h"
@@ -107,6 +109,25 @@ TEST(ImageLoading, WrittenPngReadsBackTopRowFirst) {
   const Image image = load_image(dir.write("top.ppm", ppm));
   EXPECT_EQ(rgba(image, 1, 0), (std::array<int, 4>{255, 0, 0, 255}));
   EXPECT_EQ(rgba(image, 0, 1), (std::array<int, 4>{0, 0, 255, 255}));
+}
+
+// Texel events hold 16-bit coordinates: an image wider or taller than 65536 texels is refused
+// when it is read (a 65537x1 PPM is 192 kB), and 65536 itself is read.
+TEST(ImageLoading, ImagesWiderThanTexelEventsHoldAreInputErrorsNamingTheFile) {
+  testing::TempDir dir;
+  const auto ppm = [](int width) {
+    return "P6\n" + std::to_string(width) + " 1\n255\n" + std::string(static_cast<std::size_t>(width) * 3, '\x7f');
+  };
+  const std::string wide = dir.write("wide.ppm", ppm(65537));
+  try {
+    load_image(wide);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), wide +
+                                         ": image of 65537x1 texels: expected at most 65536 texels a side (texel "
+                                         "events hold 16-bit coordinates)");
+  }
+  EXPECT_EQ(load_image(dir.write("widest.ppm", ppm(65536))).width, 65536);
 }
 
 TEST(ImageLoading, MissingAndCorruptImagesAreInputErrors) {

@@ -62,8 +62,8 @@ inline SyntheticFrame make_synthetic_frame(std::uint32_t width, std::uint32_t he
             for (std::int64_t tx = 0; tx < 2; ++tx) {
               // GL_REPEAT wrapping.
               const std::int64_t x = ((x0 + tx) % size + size) % size, y = ((y0 + ty) % size + size) % size;
-              frame.texels.push_back({0, static_cast<std::uint8_t>(level), static_cast<std::uint32_t>(x),
-                                      static_cast<std::uint32_t>(y), static_cast<std::uint16_t>(qx + dx),
+              frame.texels.push_back({0, static_cast<std::uint8_t>(level), static_cast<std::uint16_t>(x),
+                                      static_cast<std::uint16_t>(y), static_cast<std::uint16_t>(qx + dx),
                                       static_cast<std::uint16_t>(qy + dy), triangle});
             }
         }

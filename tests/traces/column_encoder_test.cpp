@@ -27,7 +27,9 @@ namespace {
 
 // The format, written the plain way: one pass per mode, one record at a time.
 
-std::uint64_t zigzag(std::uint64_t d) { return (d << 1) ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(d) >> 63); }
+std::uint64_t zigzag(std::uint64_t d) {
+  return (d << 1) ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(d) >> 63);
+}
 
 void put_escapable(std::string& bytes, std::string& escaped, std::uint64_t z) {
   if (z < 0xFF) {
@@ -58,7 +60,11 @@ std::string plain_column(const std::vector<std::uint64_t>& v) {
       ++lengths.back();
     }
   }
-  const std::uint64_t width = widest == 0 ? 0 : widest < 0x100 ? 1 : widest < 0x10000 ? 2 : widest < (1ull << 32) ? 4 : 8;
+  const std::uint64_t width = widest == 0             ? 0
+                              : widest < 0x100        ? 1
+                              : widest < 0x10000      ? 2
+                              : widest < (1ull << 32) ? 4
+                                                      : 8;
   const std::uint64_t deltas = z.size();
   const bool escaped = width > 1 && deltas + 4 + 8 * large < deltas * width;
   const std::uint64_t plain = escaped ? deltas + 4 + 8 * large : deltas * width;
@@ -152,8 +158,8 @@ TEST(ColumnEncoder, EveryColumnIsTheFormatReadPlainlyWithAndWithoutSimd) {
                                   std::size_t{9}, std::size_t{1000}, std::size_t{65536}})
         for (const bool wide : {false, true}) {
           const std::vector<std::uint64_t> v = random_column(random, shape, n, wide);
-          ASSERT_EQ(encoded(v, wide, scratch), plain_column(v)) << "shape " << shape << ", " << n << " records"
-                                                                 << (wide ? ", 64-bit" : "") << (simd ? "" : ", portable");
+          ASSERT_EQ(encoded(v, wide, scratch), plain_column(v))
+              << "shape " << shape << ", " << n << " records" << (wide ? ", 64-bit" : "") << (simd ? "" : ", portable");
           ++checked;
         }
   }
@@ -165,7 +171,8 @@ TEST(ColumnEncoder, EveryModeIsChosenSomewhereInTheCheckedShapes) {
   std::mt19937_64 random(11);
   ColumnScratch scratch;
   std::vector<int> modes;
-  for (int shape = 0; shape <= 6; ++shape) modes.push_back(static_cast<unsigned char>(encoded(random_column(random, shape, 5000, false), false, scratch)[0]));
+  for (int shape = 0; shape <= 6; ++shape)
+    modes.push_back(static_cast<unsigned char>(encoded(random_column(random, shape, 5000, false), false, scratch)[0]));
   for (const int mode : {0, 1, 0x81, 0x82}) EXPECT_NE(std::find(modes.begin(), modes.end(), mode), modes.end()) << mode;
 }
 
@@ -175,8 +182,9 @@ TEST(ColumnEncoder, TexelColumnsEncodeAsTheirRecords) {
   std::uint32_t x = 0;
   for (std::size_t i = 0; i < records.size(); ++i) {
     x += random() % 3;
-    records[i] = TexelAccess{static_cast<std::uint32_t>(i / 1000), static_cast<std::uint8_t>(random() % 3), x, x / 7,
-                             static_cast<std::uint16_t>(i / 8), static_cast<std::uint16_t>(i / 640),
+    records[i] = TexelAccess{static_cast<std::uint16_t>(i / 1000), static_cast<std::uint8_t>(random() % 3),
+                             static_cast<std::uint16_t>(x),        static_cast<std::uint16_t>(x / 7),
+                             static_cast<std::uint16_t>(i / 8),    static_cast<std::uint16_t>(i / 640),
                              static_cast<std::uint32_t>(i / 24)};
   }
   TexelColumns columns;
@@ -190,11 +198,14 @@ TEST(ColumnEncoder, TexelColumnsEncodeAsTheirRecords) {
   EXPECT_GT(from_records.size(), 5000u);
   EXPECT_EQ(from_columns, from_records);
   std::vector<TexelAccess> decoded;
-  ASSERT_EQ(decode_texel_records(std::span(reinterpret_cast<const std::uint8_t*>(from_columns.data()), from_columns.size()),
-                                 5000, decoded),
-            "");
+  ASSERT_EQ(
+      decode_texel_records(std::span(reinterpret_cast<const std::uint8_t*>(from_columns.data()), from_columns.size()),
+                           5000, decoded),
+      "");
   for (std::size_t i = 0; i < records.size(); ++i)
-    ASSERT_TRUE(decoded[i].x == records[i].x && decoded[i].triangle == records[i].triangle && decoded[i].level == records[i].level) << i;
+    ASSERT_TRUE(decoded[i].x == records[i].x && decoded[i].triangle == records[i].triangle &&
+                decoded[i].level == records[i].level)
+        << i;
 }
 
 std::string bytes_of(const std::string& path) {
@@ -212,7 +223,12 @@ std::string write_file(const std::string& path, std::uint32_t chunk_records, uns
     std::vector<TexelAccess> texels(random() % 3000);
     for (TexelAccess& t : texels) {
       x += random() % 4;
-      t = TexelAccess{0, static_cast<std::uint8_t>(random() % 2), x % 4096, x / 4096, static_cast<std::uint16_t>(x % 640), 0,
+      t = TexelAccess{0,
+                      static_cast<std::uint8_t>(random() % 2),
+                      static_cast<std::uint16_t>(x % 4096),
+                      static_cast<std::uint16_t>(x / 4096),
+                      static_cast<std::uint16_t>(x % 640),
+                      0,
                       static_cast<std::uint32_t>(burst)};
     }
     writer.texel_accesses(texels);

@@ -28,8 +28,8 @@ using ::testing::HasSubstr;
 std::vector<TexelAccess> footprints() {
   std::vector<TexelAccess> t;
   for (std::uint32_t i = 0; i < 1024; ++i)
-    t.push_back({3, static_cast<std::uint8_t>((i / 4) % 2), i, i / 2, static_cast<std::uint16_t>(i / 8), 7,
-                 i < 1000 ? 5u : 100000u});
+    t.push_back({3, static_cast<std::uint8_t>((i / 4) % 2), static_cast<std::uint16_t>(i),
+                 static_cast<std::uint16_t>(i / 2), static_cast<std::uint16_t>(i / 8), 7, i < 1000 ? 5u : 100000u});
   return t;
 }
 
@@ -55,9 +55,9 @@ TEST(RunColumns, ChosenWhereRunsAverageFourRecordsOrMoreAndTheColumnShrinks) {
   // x and y, 1-byte deltas: 1 + 8 + 1023 = 1032 each; pixel_x, 128 runs: 272; pixel_y: 9;
   // triangle, 5 runs (255, 255, 255, 235, 24), one escaped delta: 1 + 8 + 4 + 4 + 5 + 4 + 8 = 34.
   EXPECT_EQ(raw.size(), 9u + 528 + 1032 + 1032 + 272 + 9 + 34);
-  EXPECT_EQ(static_cast<std::uint8_t>(raw[9]), 0x82);             // level
-  EXPECT_EQ(static_cast<std::uint8_t>(raw[9 + 528]), 1);          // x
-  EXPECT_EQ(static_cast<std::uint8_t>(raw[9 + 528 + 1032]), 1);   // y: runs of 2 stay deltas
+  EXPECT_EQ(static_cast<std::uint8_t>(raw[9]), 0x82);                // level
+  EXPECT_EQ(static_cast<std::uint8_t>(raw[9 + 528]), 1);             // x
+  EXPECT_EQ(static_cast<std::uint8_t>(raw[9 + 528 + 1032]), 1);      // y: runs of 2 stay deltas
   EXPECT_EQ(static_cast<std::uint8_t>(raw[raw.size() - 34]), 0x82);  // triangle
   std::vector<TexelAccess> back;
   ASSERT_EQ(decode_texel_records(bytes_of(raw), 1024, back), "");
@@ -82,13 +82,16 @@ TEST(RunColumns, RunsOfEveryLengthRoundTripAcrossTheDecodersBlocks) {
   std::uint32_t level_left = 0, pixel_left = 0, triangle_left = 0;
   TexelAccess current{};
   for (std::size_t i = 0; i < texels.size(); ++i) {
-    if (level_left == 0) level_left = static_cast<std::uint32_t>(1 + next(12)), current.level = static_cast<std::uint8_t>(next(9));
+    if (level_left == 0)
+      level_left = static_cast<std::uint32_t>(1 + next(12)), current.level = static_cast<std::uint8_t>(next(9));
     if (pixel_left == 0) {
       pixel_left = static_cast<std::uint32_t>(4 + next(9));
       current.pixel_x = static_cast<std::uint16_t>(next(1024));
       current.pixel_y = static_cast<std::uint16_t>(next(1024));
     }
-    if (triangle_left == 0) triangle_left = static_cast<std::uint32_t>(1 + next(600)), current.triangle = static_cast<std::uint32_t>(next(1u << 30));
+    if (triangle_left == 0)
+      triangle_left = static_cast<std::uint32_t>(1 + next(600)),
+      current.triangle = static_cast<std::uint32_t>(next(1u << 30));
     current.x = static_cast<std::uint32_t>(next(4096));
     current.y = static_cast<std::uint32_t>(i / 3);
     texels[i] = current;
@@ -96,7 +99,7 @@ TEST(RunColumns, RunsOfEveryLengthRoundTripAcrossTheDecodersBlocks) {
   }
   std::string raw;
   encode_texel_records(texels, raw);
-  EXPECT_EQ(static_cast<std::uint8_t>(raw[9]), 0x82);  // the level column is stored as runs
+  EXPECT_EQ(static_cast<std::uint8_t>(raw[9]), 0x82);                  // the level column is stored as runs
   std::vector<TexelAccess> back(5, TexelAccess{9, 9, 9, 9, 9, 9, 9});  // stale records must go
   ASSERT_EQ(decode_texel_records(bytes_of(raw), 65536, back), "");
   expect_same(back, texels);
@@ -131,11 +134,13 @@ std::string decode_error(const std::string& raw) {
 TEST(RunColumns, DamagedRunColumnsAreErrorsNamingTheColumn) {
   const std::uint32_t zero = 0, too_many = 1025, escapes = 300;
   const std::uint8_t empty = 0, longer = 5, not_escaped = 9;
-  EXPECT_EQ(decode_error(damaged(kLevel + 9, &zero, 4)),
-            "0 runs with 0 escaped deltas for 1024 records in the level column (expected 1 to 1024 runs, fewer escapes)");
+  EXPECT_EQ(
+      decode_error(damaged(kLevel + 9, &zero, 4)),
+      "0 runs with 0 escaped deltas for 1024 records in the level column (expected 1 to 1024 runs, fewer escapes)");
   EXPECT_THAT(decode_error(damaged(kLevel + 9, &too_many, 4)), HasSubstr("1025 runs"));
   EXPECT_THAT(decode_error(damaged(kLevel + 13, &escapes, 4)), HasSubstr("256 runs with 300 escaped deltas"));
-  EXPECT_EQ(decode_error(damaged(kLevel + 17, &empty, 1)), "run lengths include 0 for 1024 records in the level column");
+  EXPECT_EQ(decode_error(damaged(kLevel + 17, &empty, 1)),
+            "run lengths include 0 for 1024 records in the level column");
   EXPECT_EQ(decode_error(damaged(kLevel + 17 + 100, &longer, 1)),
             "run lengths add up to 1025 for 1024 records in the level column");
   // The triangle's one escaped delta (the last of its 4 deltas) made an ordinary one: the 8 bytes

@@ -4,6 +4,7 @@
 // steps is an error, and a column crossing 2^31 is not; the portable paths (machines without
 // AVX2) decode a frame-like chunk, whole or damaged, to the same records and errors.
 #include <algorithm>
+#include <cstddef>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -31,8 +32,12 @@ TEST(TexelLanes, InterleavedRecordsAreTheFieldsTruncatedToTheirWidthsWithZeroPad
       std::vector<std::uint32_t> lane[7];
       for (auto& l : lane)
         for (std::size_t i = 0; i < count; ++i) l.push_back(static_cast<std::uint32_t>(random.next()));
-      const TexelLanes lanes{lane[0].data(), lane[1].data(), lane[2].data(), lane[3].data(),
-                             details ? lane[4].data() : nullptr, details ? lane[5].data() : nullptr,
+      const TexelLanes lanes{lane[0].data(),
+                             lane[1].data(),
+                             lane[2].data(),
+                             lane[3].data(),
+                             details ? lane[4].data() : nullptr,
+                             details ? lane[5].data() : nullptr,
                              details ? lane[6].data() : nullptr};
       // Garbage first: every byte, padding included, must be written.
       std::vector<TexelAccess> fast(count), portable(count);
@@ -47,15 +52,15 @@ TEST(TexelLanes, InterleavedRecordsAreTheFieldsTruncatedToTheirWidthsWithZeroPad
       }
       for (std::size_t i = 0; i < count; ++i) {
         const TexelAccess& t = fast[i];
-        ASSERT_EQ(t.texture, lane[0][i]);
+        ASSERT_EQ(t.texture, lane[0][i] & 0xFFFF);
         ASSERT_EQ(t.level, lane[1][i] & 0xFF);
-        ASSERT_EQ(t.x, lane[2][i]);
-        ASSERT_EQ(t.y, lane[3][i]);
+        ASSERT_EQ(t.x, lane[2][i] & 0xFFFF);
+        ASSERT_EQ(t.y, lane[3][i] & 0xFFFF);
         ASSERT_EQ(t.pixel_x, details ? lane[4][i] & 0xFFFF : 0u);
         ASSERT_EQ(t.pixel_y, details ? lane[5][i] & 0xFFFF : 0u);
         ASSERT_EQ(t.triangle, details ? lane[6][i] : 0u);
         const unsigned char* bytes = reinterpret_cast<const unsigned char*>(&t);
-        ASSERT_EQ(bytes[5] | bytes[6] | bytes[7], 0) << "padding of record " << i;
+        ASSERT_EQ(bytes[offsetof(TexelAccess, level) + 1], 0) << "padding of record " << i;
       }
     }
   }
@@ -145,21 +150,24 @@ TEST(TexelLanes, AColumnLeavingItsRangeByByteStepsIsAnErrorWhereverItLeaves) {
       std::vector<int> down(n - 1, 0);
       for (std::size_t i = 0; i + 1 < n; ++i) down[i] = i <= at ? -1 : (i < at + 4 ? 1 : 0);
       EXPECT_EQ(decode(chunk_with_steps(2, at, down), static_cast<std::uint32_t>(n), out),
-                "a value in the x column is out of range")
+                "a value in the x column is out of range (at most 65535)")
           << n << " records, crossing 0 after " << at;
-      // y: up to 2^32 - 1 at record `at`, then one more.
+      // y: up to 65535 (its limit) at record `at`, then one more.
       std::vector<int> up(n - 1, 0);
       for (std::size_t i = 0; i + 1 < n; ++i) up[i] = i <= at ? 1 : 0;
-      EXPECT_EQ(decode(chunk_with_steps(3, 0xFFFFFFFFull - at, up), static_cast<std::uint32_t>(n), out),
-                "a value in the y column is out of range")
+      EXPECT_EQ(decode(chunk_with_steps(3, 0xFFFFull - at, up), static_cast<std::uint32_t>(n), out),
+                "a value in the y column is out of range (at most 65535)")
+          << n << " records, crossing 65536 after " << at;
+      // triangle: up to 2^32 - 1, then one more (the lanes hold 32 bits: the step out of them).
+      EXPECT_EQ(decode(chunk_with_steps(6, 0xFFFFFFFFull - at, up), static_cast<std::uint32_t>(n), out),
+                "a value in the triangle column is out of range (at most 4294967295)")
           << n << " records, crossing 2^32 after " << at;
       // level: above 255 (its limit) from record at + 1 on.
       EXPECT_EQ(decode(chunk_with_steps(1, 255 - at, up), static_cast<std::uint32_t>(n), out),
-                "a value in the level column is out of range");
+                "a value in the level column is out of range (at most 255)");
       // triangle: crossing 2^31 is in range, and every value is exact.
       ASSERT_EQ(decode(chunk_with_steps(6, 0x80000000ull - at, up), static_cast<std::uint32_t>(n), out), "");
-      for (std::size_t i = 0; i < n; ++i)
-        ASSERT_EQ(out[i].triangle, 0x80000000ull - at + std::min(i, at + 1)) << i;
+      for (std::size_t i = 0; i < n; ++i) ASSERT_EQ(out[i].triangle, 0x80000000ull - at + std::min(i, at + 1)) << i;
     }
   }
 }
@@ -178,7 +186,8 @@ std::vector<TexelAccess> fragments(std::size_t count) {
     u += static_cast<std::uint32_t>(random.next() % 3);
     for (std::uint8_t level = 0; level < 2; ++level)
       for (std::uint32_t k = 0; k < 4 && t.size() < count; ++k)
-        t.push_back({1, level, (u >> level) + (k & 1), (v >> level) + (k >> 1), static_cast<std::uint16_t>(px),
+        t.push_back({1, level, static_cast<std::uint16_t>((u >> level) + (k & 1)),
+                     static_cast<std::uint16_t>((v >> level) + (k >> 1)), static_cast<std::uint16_t>(px),
                      static_cast<std::uint16_t>(py), triangle});
   }
   return t;

@@ -46,7 +46,8 @@ MemorySink sample_events() {
   s.end_draw();
   std::vector<TexelAccess> texels;
   for (std::uint32_t i = 0; i < 1000; ++i)
-    texels.push_back({i % 2, static_cast<std::uint8_t>(i % 2 ? 0 : (i / 7) % 3), (i * 3) % 8, (i / 5) % 8,
+    texels.push_back({static_cast<std::uint16_t>(i % 2), static_cast<std::uint8_t>(i % 2 ? 0 : (i / 7) % 3),
+                      static_cast<std::uint16_t>((i * 3) % 8), static_cast<std::uint16_t>((i / 5) % 8),
                       static_cast<std::uint16_t>(i / 4), static_cast<std::uint16_t>(i / 40), i / 100});
   s.texel_accesses(texels);
   std::vector<AddressAccess> addresses = {{0x1000, 0}, {0xFFFFFFFFFFFFull, 1}, {0x40, 2}, {0, 0}};
@@ -172,8 +173,8 @@ TEST(ChunkCodec, AddressOnlyTexelDecodingGivesTheAddressesAndZeroDetails) {
   const auto sample = sample_events().texels;
   std::vector<TexelAccess> texels(sample.begin(), sample.end());
   // Large jumps in every column (escaped deltas) and the extremes of each field.
-  texels.push_back({0xFFFFFFFFu, 255, 0xFFFFFFFFu, 0, 0xFFFF, 0, 0xFFFFFFFFu});
-  texels.push_back({0, 0, 0, 0xFFFFFFFFu, 0, 0xFFFF, 0});
+  texels.push_back({0xFFFF, 255, 0xFFFF, 0, 0xFFFF, 0, 0xFFFFFFFFu});
+  texels.push_back({0, 0, 0, 0xFFFF, 0, 0xFFFF, 0});
   std::string raw;
   encode_texel_records(texels, raw);
   const std::span<const std::uint8_t> bytes(reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size());
@@ -339,7 +340,7 @@ TEST(TraceFile, AddressOnlyTexelReadersSeeTheSameAddressesAndStillCheckEveryChun
     ADD_FAILURE() << "the damaged chunk was read";
   } catch (const InputError& e) {
     EXPECT_THAT(e.what(), HasSubstr("byte " + std::to_string(offset) + ": chunk " + std::to_string(chunk) +
-                                        ": checksum mismatch"));
+                                    ": checksum mismatch"));
   }
 }
 
@@ -390,6 +391,36 @@ TEST(TraceFile, CsvErrorsNameTheLine) {
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_THAT(std::string(e.what()), HasSubstr(":3: column vertex: 'x12' is not an unsigned number"));
+  }
+}
+
+// A texel's texture, x and y are 16-bit fields: 65535 is read, 65536 is an error naming the line,
+// the column and the range.
+TEST(TraceFile, CsvTexelColumnsBeyond16BitsAreErrorsNamingTheLineAndTheRange) {
+  const testing::TempDir dir;
+  const std::string header =
+      "event,draw,type,restart,vertex,primitive_start,texture,level,x,y,pixel_x,pixel_y,triangle,address,label,mask\n";
+  const std::string good = dir.file("good.csv");
+  put_bytes(good, header + "texel,,,,,,65535,3,65535,65535,1,2,7,,,\n");
+  MemorySink sink;
+  import_csv(good, sink);
+  ASSERT_EQ(sink.texels.size(), 1u);
+  EXPECT_TRUE(sink.texels[0].texture == 65535 && sink.texels[0].x == 65535 && sink.texels[0].y == 65535);
+  for (const char* column : {"texture", "x", "y"}) {
+    std::string row = "texel,,,,,,1,0,2,3,1,2,7,,,\n";
+    const std::size_t field = std::string(column) == "texture" ? 6 : std::string(column) == "x" ? 8 : 9;
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < field; ++k) at = row.find(',', at) + 1;
+    row.replace(at, row.find(',', at) - at, "65536");
+    const std::string bad = dir.file(std::string("bad_") + column + ".csv");
+    put_bytes(bad, header + row);
+    try {
+      import_csv(bad, sink);
+      FAIL() << column;
+    } catch (const InputError& e) {
+      EXPECT_THAT(std::string(e.what()), HasSubstr(":2: column " + std::string(column) +
+                                                   ": '65536' is not an unsigned number in range (0 to 65535)"));
+    }
   }
 }
 

@@ -55,7 +55,7 @@ void write_frames(const std::string& path, std::uint32_t frames, bool announce_f
     writer.begin_draw(DrawInfo{0, PrimitiveType::TriangleList, kNoRestart});
     std::vector<VertexFetch> fetches(5 + f, VertexFetch{f, true});
     writer.vertex_fetches(fetches);
-    std::vector<TexelAccess> texels(7 * (f + 1), TexelAccess{0, 0, f, 1, 2, 3, 0});
+    std::vector<TexelAccess> texels(7 * (f + 1), TexelAccess{0, 0, static_cast<std::uint16_t>(f), 1, 2, 3, 0});
     writer.texel_accesses(texels);
     writer.end_draw();
   }

@@ -143,7 +143,7 @@ TEST(TraceVersion, AnOperationOrMaskOutOfRangeIsACorruptChunk) {
   encode_framebuffer_records(events, raw);
   EXPECT_EQ(decode_framebuffer_records(std::span(reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size()),
                                        static_cast<std::uint32_t>(events.size()), decoded),
-            "a value in the mask column is out of range");
+            "a value in the mask column is out of range (at most 15)");
   events[5].mask = 1;
   events[9].op = static_cast<FramebufferOp>(3);
   encode_framebuffer_records(events, raw);
