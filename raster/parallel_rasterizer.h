@@ -137,11 +137,14 @@ class ParallelRasterizer {
   // where those steps are.
   template <typename Triangle, typename Flush>
   void walk_steps(Batch& batch, Triangle&& triangle, Flush&& flush);
-  // Calls quad(tile, cursor, mark) for each quad of the triangle in the serial order.
-  template <typename Quad>
-  void merge_triangle(Batch& batch, std::uint32_t triangle, Quad&& quad);
+  // Calls stretch(tile, tile_events, cursor, end) for each stretch of the triangle's quads that
+  // are consecutive in one tile and in the serial order, in that order: the quads from
+  // cursor.quad to end. The callee moves the cursor to end.
+  template <typename Stretch>
+  void merge_triangle(Batch& batch, std::uint32_t triangle, Stretch&& stretch);
   void emit_quad(const TileEvents& tile, TileCursor& cursor, const QuadMark& mark);
-  void plan_quad(std::size_t tile, TileCursor& cursor, const QuadMark& mark);
+  // Adds a stretch of quads ending with `last_quad` (the quad before `end`) to the runs.
+  void plan_run(std::size_t tile, TileCursor& cursor, std::size_t end, const QuadMark& last_quad);
   void copy_runs(const Batch& batch);
   void clear(Batch& batch);
   // Waits for a clear() the workers are doing.
@@ -150,8 +153,9 @@ class ParallelRasterizer {
   Framebuffer& framebuffer_;
   RasterOptions options_;
   EventSink* sink_;
-  bool recording_;  // a sink is attached: tiles keep their events for the replay
-  bool lending_;    // and it lends storage: tiles' events are copied into it in parallel
+  bool recording_;         // a sink is attached: tiles keep their events for the replay
+  bool lending_;           // and it lends storage: tiles' events are copied into it in parallel
+  bool streaming_copies_;  // with streaming stores: it reads them after the frame
   std::unique_ptr<OrderedSink> ordered_;
   std::unique_ptr<HierarchicalZ> hiz_;
   std::vector<std::unique_ptr<Worker>> workers_;
