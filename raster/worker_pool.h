@@ -3,6 +3,7 @@
 // own; the pool only starts them and waits for all of them.
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -36,8 +37,9 @@ class WorkerPool {
   std::mutex mutex_;
   std::condition_variable start_, done_;
   const std::function<void(unsigned)>* job_ = nullptr;
-  std::uint64_t generation_ = 0;
-  unsigned running_ = 0;
+  // Written under mutex_; atomic so that a waiting thread may watch them without it.
+  std::atomic<std::uint64_t> generation_{0};
+  std::atomic<unsigned> running_{0};
   bool stopping_ = false;
   std::exception_ptr error_;
 };
