@@ -148,8 +148,9 @@ ParallelRasterizer::ParallelRasterizer(Framebuffer& framebuffer, const RasterOpt
       recording_(sink != nullptr),
       lending_(sink != nullptr && sink->lends_storage()),
       streaming_copies_(lending_ && sink->streams_lent_storage()),
-      tile_columns_((framebuffer.width() + kScreenTile - 1) / kScreenTile),
-      tile_rows_((framebuffer.height() + kScreenTile - 1) / kScreenTile),
+      screen_tile_(screen_tile(framebuffer.width(), framebuffer.height(), std::max(1u, options.threads))),
+      tile_columns_((framebuffer.width() + screen_tile_ - 1) / screen_tile_),
+      tile_rows_((framebuffer.height() + screen_tile_ - 1) / screen_tile_),
       workspace_(acquire_workspace(std::max(1u, options.threads),
                                    static_cast<std::size_t>(tile_columns_) * static_cast<std::size_t>(tile_rows_))),
       pool_(workspace_->pool),
@@ -185,11 +186,19 @@ ParallelRasterizer::~ParallelRasterizer() {
 
 EventSink* ParallelRasterizer::event_sink() { return ordered_.get(); }
 
+int ParallelRasterizer::screen_tile(int width, int height, unsigned threads) {
+  for (int side = kLargestScreenTile; side > kSmallestScreenTile; side /= 2) {
+    const long tiles = static_cast<long>((width + side - 1) / side) * ((height + side - 1) / side);
+    if (tiles >= static_cast<long>(kTilesPerThread) * threads) return side;
+  }
+  return kSmallestScreenTile;
+}
+
 void ParallelRasterizer::tile_range(const TriangleSetup& s, int& tx0, int& ty0, int& tx1, int& ty1) const {
-  tx0 = s.x0 / kScreenTile;
-  ty0 = s.y0 / kScreenTile;
-  tx1 = s.x1 / kScreenTile;
-  ty1 = s.y1 / kScreenTile;
+  tx0 = s.x0 / screen_tile_;
+  ty0 = s.y0 / screen_tile_;
+  tx1 = s.x1 / screen_tile_;
+  ty1 = s.y1 / screen_tile_;
 }
 
 void ParallelRasterizer::draw(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c,
@@ -301,8 +310,9 @@ void ParallelRasterizer::rasterize_tile(Worker& worker, Batch& batch, std::size_
   worker.sink.tile = &out;
   const int tx = static_cast<int>(tile % static_cast<std::size_t>(tile_columns_));
   const int ty = static_cast<int>(tile / static_cast<std::size_t>(tile_columns_));
-  const PixelRect clip{tx * kScreenTile, ty * kScreenTile, std::min(framebuffer_.width(), (tx + 1) * kScreenTile) - 1,
-                       std::min(framebuffer_.height(), (ty + 1) * kScreenTile) - 1};
+  const PixelRect clip{tx * screen_tile_, ty * screen_tile_,
+                       std::min(framebuffer_.width(), (tx + 1) * screen_tile_) - 1,
+                       std::min(framebuffer_.height(), (ty + 1) * screen_tile_) - 1};
   const std::uint64_t texel_base = worker.texels.reads();
   const std::uint64_t event_base = worker.framebuffer_events.records();
   const bool debug = framebuffer_.has_debug_planes();
@@ -405,8 +415,8 @@ void ParallelRasterizer::merge_triangle(Batch& batch, std::uint32_t triangle, St
   // Several tiles: their quads interleave by their place in the traversal order. Each stretch
   // runs from the tile holding the first quad up to the first quad of any other tile (keys are
   // distinct: one per quad position), so the search over the tiles is per stretch, not per quad:
-  // a quad row of a tile under Scanline, eight under Tiled8, the whole tile under Hilbert8 (whose
-  // curve fills each aligned 64x64 block before it leaves it).
+  // a quad row of a tile under Scanline, a row of its 8x8-pixel blocks under Tiled8, the whole
+  // tile under Hilbert8 (whose curve fills each aligned power-of-two block before it leaves it).
   for (;;) {
     int best = -1;
     std::uint64_t best_key = 0, next_key = std::uint64_t{1} << 32;  // next_key: the others' first

@@ -1,5 +1,5 @@
 // Sort-middle parallel rasterization with the serial renderer's output, to the bit and to the
-// event. Triangles are set up on the calling thread and binned to 64x64-pixel screen tiles; a
+// event. Triangles are set up on the calling thread and binned to square screen tiles; a
 // batch of them is rasterized tile by tile on a WorkerPool, each tile drawing its triangles in
 // draw order (the depth buffer, the colours and hierarchical Z are per pixel or per 8x8 tile, so
 // tiles are independent). Each tile keeps its events in its own buffers with a mark per quad.
@@ -48,11 +48,16 @@ namespace rastrace {
 
 class ParallelRasterizer {
  public:
-  // Pixels; a multiple of 8 (hierarchical Z tiles). 64 rather than 32: every tile a triangle
-  // touches runs the quad loop for it (setup, coefficients, the pipeline filling), and with 32
-  // that cost 6-7% of the frame on two threads (spider, grazing plane); a 1024x768 frame still
-  // has 192 tiles to share out.
-  static constexpr int kScreenTile = 64;
+  // The side of a screen tile, in pixels: a power of two (the traversals' aligned blocks stay
+  // whole, and hierarchical Z's 8x8 tiles with them). Every tile a triangle touches runs the quad
+  // loop for it (setup, coefficients, the pipeline filling), so tiles are as large as the frame
+  // allows while each thread still has kTilesPerThread of them to share out: 128 for a 1024x768
+  // frame on two threads (48 tiles), 64 on four or more, never below 64 (32 cost the spider and the
+  // grazing plane 6-7% on two threads).
+  static constexpr int kLargestScreenTile = 128;
+  static constexpr int kSmallestScreenTile = 64;
+  static constexpr int kTilesPerThread = 16;
+  static int screen_tile(int width, int height, unsigned threads);
   static constexpr std::size_t kBatchTriangles = 16384;  // triangles binned before a batch is drawn
 
   // Draws with options.threads threads (the calling one included).
@@ -159,6 +164,7 @@ class ParallelRasterizer {
   std::unique_ptr<OrderedSink> ordered_;
   std::unique_ptr<HierarchicalZ> hiz_;
   std::vector<std::unique_ptr<Worker>> workers_;
+  int screen_tile_;  // screen_tile() of the frame and thread count
   int tile_columns_, tile_rows_;
   std::uint64_t triangles_ = 0;
 
