@@ -167,8 +167,11 @@ ParallelRasterizer::ParallelRasterizer(Framebuffer& framebuffer, const RasterOpt
   for (unsigned w = 0; w < pool_.size(); ++w) workers_.push_back(std::make_unique<Worker>(sink_));
   draw_tiles_ = [this](unsigned w) {
     Batch& batch = *drawing_;
-    for (std::size_t i = next_tile_++; i < batch.busy_tiles.size(); i = next_tile_++)
-      rasterize_tile(*workers_[w], batch, batch.busy_tiles[i]);
+    // Odd workers take tiles from the end of the row-major list, even ones from the start, so
+    // that each core draws a region of the screen (and reads its textures) of its own until they
+    // meet.
+    const bool from_end = (w & 1u) != 0;
+    for (std::size_t i = 0; claim_tile(from_end, i);) rasterize_tile(*workers_[w], batch, batch.busy_tiles[i]);
   };
   copy_runs_ = [this](unsigned) { copy_runs(*merging_); };
   clear_rows_ = [this](unsigned w) {
@@ -192,6 +195,20 @@ int ParallelRasterizer::screen_tile(int width, int height, unsigned threads) {
     if (tiles >= static_cast<long>(kTilesPerThread) * threads) return side;
   }
   return kSmallestScreenTile;
+}
+
+bool ParallelRasterizer::claim_tile(bool from_end, std::size_t& index) {
+  std::uint64_t range = unclaimed_tiles_.load(std::memory_order_relaxed);
+  for (;;) {
+    const auto first = static_cast<std::uint32_t>(range >> 32), end = static_cast<std::uint32_t>(range);
+    if (first >= end) return false;
+    const std::uint64_t rest =
+        from_end ? (std::uint64_t{first} << 32 | (end - 1)) : (std::uint64_t{first + 1} << 32 | end);
+    if (unclaimed_tiles_.compare_exchange_weak(range, rest, std::memory_order_relaxed)) {
+      index = from_end ? end - 1 : first;
+      return true;
+    }
+  }
 }
 
 void ParallelRasterizer::tile_range(const TriangleSetup& s, int& tx0, int& ty0, int& tx1, int& ty1) const {
@@ -286,7 +303,7 @@ void ParallelRasterizer::run_batch(bool wait) {
   for (std::size_t t = 0; t < batch.bins.size(); ++t)
     if (!batch.bins[t].empty()) batch.busy_tiles.push_back(t);
   drawing_ = &batch;
-  next_tile_ = 0;
+  unclaimed_tiles_.store(static_cast<std::uint64_t>(batch.busy_tiles.size()), std::memory_order_relaxed);
   filling_ = filling_ == &batches_[0] ? &batches_[1] : &batches_[0];
   pool_.start(draw_tiles_);
   if (wait) complete_drawing();

@@ -194,7 +194,10 @@ class ParallelRasterizer {
   std::vector<TileCursor>& cursors_;
   Batch* filling_;            // receives triangles and steps
   Batch* drawing_ = nullptr;  // being drawn by the workers, if any
-  std::atomic<std::size_t> next_tile_{0};
+  // The busy tiles of *drawing_ no worker has claimed: [first, end) as first << 32 | end.
+  std::atomic<std::uint64_t> unclaimed_tiles_{0};
+  // Claims the first unclaimed tile, or the last with from_end; false when none is left.
+  bool claim_tile(bool from_end, std::size_t& index);
   std::function<void(unsigned)> draw_tiles_;  // the workers' job: tiles of *drawing_
   // merge_in_place()'s: the runs claimed so far, the spans the sink lent, the workers' job.
   std::atomic<std::size_t> next_run_{0};
