@@ -506,7 +506,7 @@ void ParallelRasterizer::merge_in_place(Batch& batch) {
   std::vector<Run>& runs = workspace_->runs;
   runs.clear();
   const auto plan = [this](std::size_t tile, const TileEvents& events, TileCursor& cursor, std::size_t end) {
-    plan_run(tile, cursor, end, events.quads[end - 1]);
+    plan_run(tile, events, cursor, end);
   };
   walk_steps(
       batch, [&](std::uint32_t triangle) { merge_triangle(batch, triangle, plan); }, [] {});
@@ -521,7 +521,8 @@ void ParallelRasterizer::merge_in_place(Batch& batch) {
   if (events) sink_->commit_framebuffer(events);
 }
 
-void ParallelRasterizer::plan_run(std::size_t tile, TileCursor& cursor, std::size_t end, const QuadMark& last_quad) {
+void ParallelRasterizer::plan_run(std::size_t tile, const TileEvents& events, TileCursor& cursor, std::size_t end) {
+  const QuadMark& last_quad = events.quads[end - 1];
   // Runs stay short enough for the workers to share a batch that is one big run.
   constexpr std::uint32_t kRunTexels = 1u << 15;
   std::vector<Run>& runs = workspace_->runs;

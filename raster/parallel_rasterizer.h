@@ -148,8 +148,8 @@ class ParallelRasterizer {
   template <typename Stretch>
   void merge_triangle(Batch& batch, std::uint32_t triangle, Stretch&& stretch);
   void emit_quad(const TileEvents& tile, TileCursor& cursor, const QuadMark& mark);
-  // Adds a stretch of quads ending with `last_quad` (the quad before `end`) to the runs.
-  void plan_run(std::size_t tile, TileCursor& cursor, std::size_t end, const QuadMark& last_quad);
+  // Adds the stretch of the tile's quads from cursor.quad to end to the runs.
+  void plan_run(std::size_t tile, const TileEvents& events, TileCursor& cursor, std::size_t end);
   void copy_runs(const Batch& batch);
   void clear(Batch& batch);
   // Waits for a clear() the workers are doing.

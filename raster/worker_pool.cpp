@@ -25,16 +25,16 @@ void pause() {
 #endif
 }
 
-// Whether done() became true within kWatch.
+// Returns once done() is true or kWatch has passed, whichever comes first.
 template <typename Done>
-bool watch(Done&& done) {
+void watch(Done&& done) {
   const auto until = std::chrono::steady_clock::now() + kWatch;
   for (;;) {
     for (int i = 0; i < 32; ++i) {
-      if (done()) return true;
+      if (done()) return;
       pause();
     }
-    if (std::chrono::steady_clock::now() >= until) return done();
+    if (std::chrono::steady_clock::now() >= until) return;
     std::this_thread::yield();
   }
 }
