@@ -11,12 +11,19 @@
 // not counted; rastrace with one thread and with every core, untraced, tracing every event into
 // memory (MemorySink) and into a trace file (TraceWriter, zstd). Times are wall-clock (multi-threaded
 // rows could not be compared otherwise); every row's time is its best frame, the fairest figure on a
-// loaded machine. Each rastrace row carries vs_llvmpipe_1t: llvmpipe's one-thread best frame over
-// rastrace's best frame, both measured in this process's run (llvmpipe once per scene, first use),
-// and, for one-thread rows, vs_llvmpipe_1t_cpu: the same ratio in CPU time. Each rastrace row first
-// renders one untimed frame (first_frame_cpu_ms: its process CPU time), which grows the buffers the
-// timed frames reuse, as llvmpipe's best of 5 leaves out its first frame. Fragment rates use
-// rastrace's count of fragments written for the frame (the same frame, the same coverage).
+// loaded machine. Each rastrace row carries its ratios to the frames it is judged against, measured
+// around the row's own frames, so that both sides of a ratio see the same machine (on a shared
+// machine a best frame drifts by a third from one minute to the next):
+// - vs_llvmpipe_1t (one-thread rows) or vs_llvmpipe_every_core (every-core rows): llvmpipe with the
+//   row's threads (LP_NUM_THREADS=0, or the core count), its best of 5 frames just before the row's
+//   frames and 5 just after, over rastrace's best frame; one-thread rows add vs_llvmpipe_1t_cpu,
+//   the same ratio in CPU time;
+// - vs_untraced (traced rows): the row's best frame over the best of as many untraced frames with
+//   the same threads, rendered one after each traced frame.
+// Each rastrace row first renders one untimed frame (first_frame_cpu_ms: its process CPU time),
+// which grows the buffers the timed frames reuse, as llvmpipe's best of 5 leaves out its first
+// frame. Fragment rates use rastrace's count of fragments written for the frame (the same frame,
+// the same coverage).
 // RASTRACE_BENCH_FRAMES sets the rastrace rows' timed frames (default 8; more to profile them).
 #include <benchmark/benchmark.h>
 
@@ -142,14 +149,12 @@ BestFrame osmesa_frame(std::int64_t scene, ReferenceDriver driver, int llvmpipe_
   return {image.best_frame_seconds, image.best_frame_cpu_seconds};
 }
 
-// llvmpipe's one-thread best frame of each scene, measured once in this run.
-const BestFrame& llvmpipe_one_thread(std::int64_t scene) {
-  static std::map<std::int64_t, BestFrame> measured;
-  auto it = measured.find(scene);
-  if (it == measured.end())
-    it = measured.emplace(scene, osmesa_frame(scene, ReferenceDriver::Llvmpipe, 0, nullptr)).first;
-  return it->second;
+// llvmpipe's best of 5 frames of the scene, now, with one thread or every core.
+BestFrame llvmpipe_frame(std::int64_t scene, bool every_core) {
+  return osmesa_frame(scene, ReferenceDriver::Llvmpipe, every_core ? static_cast<int>(all_cores()) : 0, nullptr);
 }
+
+BestFrame best_of(const BestFrame& a, const BestFrame& b) { return {std::min(a.wall, b.wall), std::min(a.cpu, b.cpu)}; }
 
 std::uint64_t frame_fragments(std::int64_t scene) {
   static std::map<std::int64_t, std::uint64_t> counted;
@@ -187,7 +192,7 @@ void BM_Rastrace(benchmark::State& state) {
   const Scene& scene = frame(scene_index);
   const bool every_core = state.range(1) != 0;
   const std::int64_t tracing = state.range(2);
-  const BestFrame llvmpipe = llvmpipe_one_thread(scene_index);
+  BestFrame llvmpipe = llvmpipe_frame(scene_index, every_core);
   RenderOptions options;
   options.pipeline.raster.threads = every_core ? all_cores() : 1;
   MemorySink memory;
@@ -202,18 +207,18 @@ void BM_Rastrace(benchmark::State& state) {
   std::uint64_t fragments = 0, events = 0, file_bytes = 0;
   // The render target is kept from frame to frame, as llvmpipe's context keeps its own.
   Framebuffer framebuffer(scene.width, scene.height);
-  // One frame: returns its wall-clock and process CPU seconds.
-  auto render_frame = [&]() -> BestFrame {
+  // One frame, traced as `into` says (0: untraced, 1: memory, 2: file): its wall-clock and process
+  // CPU seconds.
+  auto render_frame = [&](std::int64_t into) -> BestFrame {
     memory.clear();  // keeps the capacity: the frame's events are stored, not reallocated
     const auto start = std::chrono::steady_clock::now();
     const double cpu_start = process_cpu_seconds();
-    if (tracing == 2) {
+    if (into == 2) {
       TraceWriter writer(path, metadata);
       fragments = render_scene_into(framebuffer, scene, options, &writer).raster.fragments_passed;
       file_bytes = writer.bytes_written();
     } else {
-      fragments =
-          render_scene_into(framebuffer, scene, options, tracing == 1 ? &memory : nullptr).raster.fragments_passed;
+      fragments = render_scene_into(framebuffer, scene, options, into == 1 ? &memory : nullptr).raster.fragments_passed;
       benchmark::DoNotOptimize(framebuffer.colour());
     }
     const double cpu = process_cpu_seconds() - cpu_start;
@@ -222,21 +227,28 @@ void BM_Rastrace(benchmark::State& state) {
   // The first frame of a process also grows the sink's buffers and the rasterizer's (which are
   // kept for the next frames, as an application rendering frame after frame keeps them): it is
   // reported on its own, and the timed frames are the ones after it.
-  const BestFrame first = render_frame();
+  const BestFrame first = render_frame(tracing);
+  BestFrame untraced{1e30, 1e30};
   for (auto _ : state) {
-    const BestFrame f = render_frame();
+    const BestFrame f = render_frame(tracing);
     state.SetIterationTime(f.wall);
-    best.wall = std::min(best.wall, f.wall);
-    best.cpu = std::min(best.cpu, f.cpu);
+    best = best_of(best, f);
     events = memory.fetches.size() + memory.texels.size() + memory.framebuffer.size();
+    if (tracing != 0) untraced = best_of(untraced, render_frame(0));  // not timed: the time is manual
   }
+  llvmpipe = best_of(llvmpipe, llvmpipe_frame(scene_index, every_core));
   std::filesystem::remove(path);
   report(state, fragments, best.wall);
   state.counters["threads"] = static_cast<double>(options.pipeline.raster.threads);
   state.counters["process_cpu_ms"] = best.cpu * 1e3;       // all of rastrace's threads
   state.counters["first_frame_cpu_ms"] = first.cpu * 1e3;  // growing the buffers the next frames reuse
-  state.counters["vs_llvmpipe_1t"] = llvmpipe.wall / best.wall;
-  if (!every_core) state.counters["vs_llvmpipe_1t_cpu"] = llvmpipe.cpu / best.cpu;
+  if (every_core) {
+    state.counters["vs_llvmpipe_every_core"] = llvmpipe.wall / best.wall;
+  } else {
+    state.counters["vs_llvmpipe_1t"] = llvmpipe.wall / best.wall;
+    state.counters["vs_llvmpipe_1t_cpu"] = llvmpipe.cpu / best.cpu;
+  }
+  if (tracing != 0) state.counters["vs_untraced"] = best.wall / untraced.wall;
   if (tracing == 1) state.counters["events"] = static_cast<double>(events);
   if (tracing == 2) state.counters["file_bytes"] = static_cast<double>(file_bytes);
   state.SetLabel(std::string(kSceneNames[scene_index]) + (every_core ? " every core" : " one thread") +
