@@ -11,11 +11,12 @@
 #include <vector>
 
 #include "traces/events.h"
+#include "traces/texel_lanes.h"
 
 namespace rastrace {
 
 struct TexelColumns {
-  static constexpr std::size_t kFields = 7;
+  static constexpr std::size_t kFields = kTexelLaneFields;
   std::vector<std::uint32_t> lanes;
   std::size_t capacity = 0;  // records the lanes hold
   std::size_t size = 0;      // records held
@@ -28,18 +29,7 @@ struct TexelColumns {
   }
   // Appends records; at most capacity - size of them.
   void append(std::span<const TexelAccess> records) {
-    std::uint32_t* lane = lanes.data() + size;
-    const std::size_t c = capacity;
-    for (const TexelAccess& r : records) {
-      lane[0] = r.texture;
-      lane[c] = r.level;
-      lane[2 * c] = r.x;
-      lane[3 * c] = r.y;
-      lane[4 * c] = r.pixel_x;
-      lane[5 * c] = r.pixel_y;
-      lane[6 * c] = r.triangle;
-      ++lane;
-    }
+    split_texels(records.data(), records.size(), lanes.data() + size, capacity);
     size += records.size();
   }
   std::span<const std::uint32_t> field(std::size_t k) const { return {lanes.data() + k * capacity, size}; }

@@ -40,6 +40,21 @@ void interleave_words(const TexelLanes& l, std::size_t begin, std::size_t count,
   }
 }
 
+void split_words(const TexelAccess* records, std::size_t begin, std::size_t count, std::uint32_t* lanes,
+                 std::size_t stride) {
+  for (std::size_t i = begin; i < count; ++i) {
+    const TexelAccess& r = records[i];
+    std::uint32_t* lane = lanes + i;
+    lane[0] = r.texture;
+    lane[stride] = r.level;
+    lane[2 * stride] = r.x;
+    lane[3 * stride] = r.y;
+    lane[4 * stride] = r.pixel_x;
+    lane[5 * stride] = r.pixel_y;
+    lane[6 * stride] = r.triangle;
+  }
+}
+
 #if RASTRACE_TEXEL_LANES_AVX2
 __attribute__((target("avx2"))) inline __m256i load(const std::uint32_t* p) {
   return _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p));
@@ -76,6 +91,38 @@ __attribute__((target("avx2"))) std::size_t interleave_avx2(const TexelLanes& l,
     _mm256_storeu_si256(o + 1, _mm256_permute2x128_si256(r2, r3, 0x20));
     _mm256_storeu_si256(o + 2, _mm256_permute2x128_si256(r0, r1, 0x31));
     _mm256_storeu_si256(o + 3, _mm256_permute2x128_si256(r2, r3, 0x31));
+  }
+  return i;
+}
+
+// The inverse, records [0, returned) in groups of eight into lanes `stride` apart; the rest is
+// split_words'.
+__attribute__((target("avx2"))) std::size_t split_avx2(const TexelAccess* records, std::size_t count,
+                                                       std::uint32_t* lanes, std::size_t stride) {
+  const __m256i low16 = _mm256_set1_epi32(0xFFFF), byte = _mm256_set1_epi32(0xFF);
+  std::size_t i = 0;
+  for (; i + 8 <= count; i += 8) {
+    const auto* in = reinterpret_cast<const __m256i*>(static_cast<const void*>(records + i));
+    const __m256i q0 = _mm256_loadu_si256(in + 0), q1 = _mm256_loadu_si256(in + 1);  // records 0|1, 2|3
+    const __m256i q2 = _mm256_loadu_si256(in + 2), q3 = _mm256_loadu_si256(in + 3);  // records 4|5, 6|7
+    const __m256i r0 = _mm256_permute2x128_si256(q0, q2, 0x20);                      // record 0 | record 4
+    const __m256i r1 = _mm256_permute2x128_si256(q0, q2, 0x31);                      // record 1 | record 5
+    const __m256i r2 = _mm256_permute2x128_si256(q1, q3, 0x20);                      // record 2 | record 6
+    const __m256i r3 = _mm256_permute2x128_si256(q1, q3, 0x31);                      // record 3 | record 7
+    // A 4x4 transposition within each 128-bit half: word k of records 0-7, one record a lane.
+    const __m256i w01 = _mm256_unpacklo_epi32(r0, r1), w23 = _mm256_unpackhi_epi32(r0, r1);
+    const __m256i v01 = _mm256_unpacklo_epi32(r2, r3), v23 = _mm256_unpackhi_epi32(r2, r3);
+    const __m256i a = _mm256_unpacklo_epi64(w01, v01), b = _mm256_unpackhi_epi64(w01, v01);
+    const __m256i c = _mm256_unpacklo_epi64(w23, v23), d = _mm256_unpackhi_epi64(w23, v23);
+    const __m256i fields[kTexelLaneFields] = {_mm256_and_si256(a, low16),
+                                              _mm256_and_si256(_mm256_srli_epi32(a, 16), byte),
+                                              _mm256_and_si256(b, low16),
+                                              _mm256_srli_epi32(b, 16),
+                                              _mm256_and_si256(c, low16),
+                                              _mm256_srli_epi32(c, 16),
+                                              d};
+    for (std::size_t k = 0; k < kTexelLaneFields; ++k)
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(lanes + k * stride + i), fields[k]);
   }
   return i;
 }
@@ -151,6 +198,19 @@ void interleave_texels(const TexelLanes& lanes, std::size_t count, TexelAccess* 
     if (has_avx2()) done = interleave_avx2(lanes, count, out);
 #endif
   interleave_words(lanes, done, count, out);
+}
+
+void split_texels(const TexelAccess* records, std::size_t count, std::uint32_t* lanes, std::size_t stride) {
+  std::size_t done = 0;
+#if RASTRACE_TEXEL_LANES_AVX2
+  if constexpr (std::endian::native == std::endian::little)
+    if (has_avx2()) done = split_avx2(records, count, lanes, stride);
+#endif
+  split_words(records, done, count, lanes, stride);
+}
+
+void split_texels_portable(const TexelAccess* records, std::size_t count, std::uint32_t* lanes, std::size_t stride) {
+  split_words(records, 0, count, lanes, stride);
 }
 
 void use_texel_lane_simd(bool enabled) {

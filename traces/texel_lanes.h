@@ -1,12 +1,15 @@
-// The SIMD kernels of texel chunk decoding (chunk_codec.cpp). A texel chunk is decoded block by
-// block into lanes, one contiguous uint32 array per record column, and the lanes are then
-// interleaved into TexelAccess records:
+// The SIMD kernels between texel records and lanes (one contiguous uint32 array per record
+// column). A texel chunk is decoded block by block into lanes, and the lanes are then interleaved
+// into TexelAccess records (chunk_codec.cpp); a trace writer splits the records it is given into
+// its open chunk's lanes (texel_columns.h):
 //   add_byte_deltas()    a column of 1-byte zig-zag deltas (modes 1 and 0x81, chunk_codec.h) as
 //                        prefix sums, eight records at a time;
 //   interleave_texels()  the lanes into records, each record written once (16 bytes) instead of
-//                        a store per field.
-// Both use AVX2 where the machine has it; elsewhere add_byte_deltas() does nothing (the caller's
-// scalar decoder does the work) and a record is interleaved as four 4-byte words.
+//                        a store per field;
+//   split_texels()       records into lanes, eight records as four loads and seven stores instead
+//                        of fourteen of each.
+// All use AVX2 where the machine has it; elsewhere add_byte_deltas() does nothing (the caller's
+// scalar decoder does the work) and the others move a field at a time.
 #pragma once
 
 #include <cstddef>
@@ -53,7 +56,15 @@ void interleave_texels(const TexelLanes& lanes, std::size_t count, TexelAccess* 
 // The same without SIMD, whatever the machine (for tests comparing the two).
 void interleave_texels_portable(const TexelLanes& lanes, std::size_t count, TexelAccess* out);
 
-// False: both kernels take their portable paths from now on, as on a machine without AVX2 (for
+// Lanes a record splits into: texture, level, x, y, pixel_x, pixel_y, triangle.
+inline constexpr std::size_t kTexelLaneFields = 7;
+
+// The inverse, for the trace writer's open chunk (texel_columns.h): field k of records[i] (texture,
+// level, x, y, pixel_x, pixel_y, triangle, each widened to 32 bits) to lanes[k * stride + i].
+void split_texels(const TexelAccess* records, std::size_t count, std::uint32_t* lanes, std::size_t stride);
+void split_texels_portable(const TexelAccess* records, std::size_t count, std::uint32_t* lanes, std::size_t stride);
+
+// False: the kernels take their portable paths from now on, as on a machine without AVX2 (for
 // tests of those paths on any machine; true, the default, uses AVX2 where there is one).
 void use_texel_lane_simd(bool enabled);
 

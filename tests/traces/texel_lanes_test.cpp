@@ -1,8 +1,9 @@
-// The SIMD kernels of texel decoding (traces/texel_lanes.h): interleaved records are byte for
-// byte the portable ones; byte-delta prefix sums equal a 64-bit running value's low 32 bits and
-// find every step out of [0, 2^32); through the decoder, a column leaving its range by 1-byte
-// steps is an error, and a column crossing 2^31 is not; the portable paths (machines without
-// AVX2) decode a frame-like chunk, whole or damaged, to the same records and errors.
+// The SIMD kernels between texel records and lanes (traces/texel_lanes.h): interleaved records
+// are byte for byte the portable ones, and so are split lanes; byte-delta prefix sums equal a
+// 64-bit running value's low 32 bits and find every step out of [0, 2^32); through the decoder, a
+// column leaving its range by 1-byte steps is an error, and a column crossing 2^31 is not; the
+// portable paths (machines without AVX2) decode a frame-like chunk, whole or damaged, to the same
+// records and errors.
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
@@ -68,6 +69,35 @@ TEST(TexelLanes, InterleavedRecordsAreTheFieldsTruncatedToTheirWidthsWithZeroPad
 
 // zig-zag, as the column coding stores a delta
 std::uint8_t zigzag(int delta) { return static_cast<std::uint8_t>(delta >= 0 ? 2 * delta : -2 * delta - 1); }
+
+TEST(TexelLanes, SplitLanesHoldEachFieldWidenedAndIgnoreThePaddingByte) {
+  Random random{29};
+  for (std::size_t count = 0; count <= 41; ++count) {
+    std::vector<TexelAccess> records(count);
+    for (TexelAccess& r : records) {
+      const std::uint64_t a = random.next(), b = random.next();
+      r = TexelAccess{static_cast<std::uint16_t>(a),       static_cast<std::uint8_t>(a >> 16),
+                      static_cast<std::uint16_t>(a >> 24), static_cast<std::uint16_t>(a >> 40),
+                      static_cast<std::uint16_t>(b),       static_cast<std::uint16_t>(b >> 16),
+                      static_cast<std::uint32_t>(b >> 32)};
+      // A padding byte that is not zero (records a caller built itself) must not reach a lane.
+      reinterpret_cast<unsigned char*>(&r)[3] = static_cast<unsigned char>(a >> 56);
+    }
+    // Lanes further apart than the records, as an open chunk's are, with garbage between them.
+    const std::size_t stride = count + 3;
+    std::vector<std::uint32_t> fast(7 * stride, 0xA5A5A5A5u), portable(7 * stride, 0xA5A5A5A5u);
+    split_texels(records.data(), count, fast.data(), stride);
+    split_texels_portable(records.data(), count, portable.data(), stride);
+    ASSERT_EQ(fast, portable) << count;
+    for (std::size_t i = 0; i < count; ++i) {
+      const TexelAccess& r = records[i];
+      const std::uint32_t want[7] = {r.texture, r.level, r.x, r.y, r.pixel_x, r.pixel_y, r.triangle};
+      for (std::size_t k = 0; k < 7; ++k) ASSERT_EQ(fast[k * stride + i], want[k]) << count << " " << i << " " << k;
+    }
+    for (std::size_t k = 0; k < 7; ++k)
+      for (std::size_t i = count; i < stride; ++i) ASSERT_EQ(fast[k * stride + i], 0xA5A5A5A5u) << "past the records";
+  }
+}
 
 TEST(TexelLanes, ByteDeltaSumsAreTheLow32BitsOfTheRunningValueAndFindEveryStepOutOf32Bits) {
   Random random{5};
