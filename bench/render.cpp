@@ -24,6 +24,11 @@
 // which grows the buffers the timed frames reuse, as llvmpipe's best of 5 leaves out its first
 // frame. Fragment rates use rastrace's count of fragments written for the frame (the same frame,
 // the same coverage).
+// BM_TraceStoreFloor, registered last, is what tracing a frame into memory costs at the least on
+// this machine: the frame's event bytes written by one thread with streaming stores (the
+// recorders' stores, without the recording), against the untraced one-thread frame. It runs after
+// every other row: measured inside the rows, its tens of megabytes of fresh memory made some of
+// the llvmpipe frames measured after it twice as fast (on a KVM guest), which no ratio may see.
 // RASTRACE_BENCH_FRAMES sets the rastrace rows' timed frames (default 8; more to profile them).
 #include <benchmark/benchmark.h>
 
@@ -40,9 +45,11 @@
 #include <string>
 #include <string_view>
 #include <thread>
+#include <vector>
 
 #include <glm/ext/matrix_transform.hpp>
 
+#include "core/streaming_copy.h"
 #include "pipeline/render_scene.h"
 #include "reference/osmesa_renderer.h"
 #include "scenes/bounding_box.h"
@@ -155,6 +162,26 @@ BestFrame llvmpipe_frame(std::int64_t scene, bool every_core) {
 }
 
 BestFrame best_of(const BestFrame& a, const BestFrame& b) { return {std::min(a.wall, b.wall), std::min(a.cpu, b.cpu)}; }
+
+// The least time one thread takes to write `bytes` into memory written before (as a MemorySink's
+// storage is from frame to frame), with the streaming stores the recorders use: best of 5, each a
+// 64 KiB block (in the L2) copied over the whole buffer. What tracing a frame's events into memory
+// must cost at the least, however little the recording itself did.
+double streaming_store_seconds(std::size_t bytes) {
+  constexpr std::size_t kBlock = 64 << 10;
+  const std::vector<unsigned char> block(kBlock, 0x5A);
+  std::vector<unsigned char> buffer(bytes, 0);  // zeroed: every page is touched before timing
+  double best = 1e30;
+  for (int round = 0; round < 5; ++round) {
+    const auto start = std::chrono::steady_clock::now();
+    for (std::size_t at = 0; at < bytes; at += kBlock)
+      copy_bytes_streaming(buffer.data() + at, block.data(), std::min(kBlock, bytes - at));
+    streaming_fence();
+    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  benchmark::DoNotOptimize(buffer.data());
+  return best;
+}
 
 std::uint64_t frame_fragments(std::int64_t scene) {
   static std::map<std::int64_t, std::uint64_t> counted;
@@ -395,6 +422,44 @@ BENCHMARK(BM_Anisotropic)
     ->Arg(16)
     ->UseManualTime()
     ->Iterations(4)
+    ->Unit(benchmark::kMillisecond);
+
+// The least that tracing the frame into memory can cost here (see the top of the file): its event
+// bytes, the time one thread takes to write them with streaming stores (best of 5), and the
+// vs_untraced of a traced-to-memory row if that were all tracing cost.
+void BM_TraceStoreFloor(benchmark::State& state) {
+  const Scene& scene = frame(state.range(0));
+  RenderOptions options;
+  options.pipeline.raster.threads = 1;
+  Framebuffer framebuffer(scene.width, scene.height);
+  std::size_t bytes = 0;
+  {  // the untraced frames below run without the traced frame's memory
+    MemorySink memory;
+    render_scene_into(framebuffer, scene, options, &memory);
+    bytes = memory.fetches.size() * sizeof(VertexFetch) + memory.texels.size() * sizeof(TexelAccess) +
+            memory.framebuffer.size() * sizeof(FramebufferAccess);
+  }
+  double untraced = 1e30;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    render_scene_into(framebuffer, scene, options, nullptr);
+    const double frame_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    untraced = std::min(untraced, frame_seconds);
+    state.SetIterationTime(frame_seconds);
+  }
+  const double floor = streaming_store_seconds(bytes);
+  state.counters["event_mb"] = static_cast<double>(bytes) / 1e6;
+  state.counters["store_floor_ms"] = floor * 1e3;
+  state.counters["untraced_ms"] = untraced * 1e3;
+  state.counters["floor_vs_untraced"] = (untraced + floor) / untraced;
+  state.counters["store_gb_per_s"] = static_cast<double>(bytes) / floor / 1e9;
+  state.SetLabel(std::string(kSceneNames[state.range(0)]) + " one thread");
+}
+BENCHMARK(BM_TraceStoreFloor)
+    ->ArgNames({"scene"})
+    ->DenseRange(0, 2)
+    ->UseManualTime()
+    ->Iterations(10)
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace
