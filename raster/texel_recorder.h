@@ -161,73 +161,86 @@ class TexelRecorder {
   // record_quad() on a sink, in AVX2 and out of line: inlined into the quad loop, its vector code
   // made the untraced frames on every core 4-5% slower (the grazing plane's), though it never ran
   // there. Called, it costs little: the filter kernel's call just before has already spilled the
-  // loop's vectors.
+  // loop's vectors. Events are assembled by in-lane unpacks, with one lane-crossing step per
+  // stored vector, in straight-line code: written with generic shuffles, GCC kept the 4x4
+  // transposition on the stack and looped over the pixels, and the grazing plane's traced frame
+  // cost 4% more.
   template <bool kTwoLevels>
   [[gnu::noinline]] __attribute__((target("avx2"))) void record_quad_avx2(const TexelSite& site, unsigned level, int qx,
                                                                           int qy, const Lanes& x0, const Lanes& x1,
                                                                           const Lanes& y0, const Lanes& y1) {
     constexpr int kLevels = kTwoLevels ? 2 : 1;
     reads_ += 16 * kLevels;
-    using u32x8 = std::uint32_t __attribute__((vector_size(32)));
-    const u32x8 low16 = {0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF, 0xFFFF};
-    const u32x8 ux0 = reinterpret_cast<const u32x8&>(x0) & low16, ux1 = reinterpret_cast<const u32x8&>(x1) & low16;
-    const u32x8 uy0 = reinterpret_cast<const u32x8&>(y0) << 16, uy1 = reinterpret_cast<const u32x8&>(y1) << 16;
-    // Word 1 (x, y) of each lane's four events, in footprint order.
-    const u32x8 c0 = ux0 | uy0, c1 = ux1 | uy0, c2 = ux0 | uy1, c3 = ux1 | uy1;
-    // Transposed: xy[p] holds lane p's four words 1 in its low half, lane p + 4's in its high half.
-    const u32x8 lo01 = __builtin_shufflevector(c0, c1, 0, 8, 1, 9, 4, 12, 5, 13);
-    const u32x8 hi01 = __builtin_shufflevector(c0, c1, 2, 10, 3, 11, 6, 14, 7, 15);
-    const u32x8 lo23 = __builtin_shufflevector(c2, c3, 0, 8, 1, 9, 4, 12, 5, 13);
-    const u32x8 hi23 = __builtin_shufflevector(c2, c3, 2, 10, 3, 11, 6, 14, 7, 15);
-    const u32x8 xy[4] = {__builtin_shufflevector(lo01, lo23, 0, 1, 8, 9, 4, 5, 12, 13),
-                         __builtin_shufflevector(lo01, lo23, 2, 3, 10, 11, 6, 7, 14, 15),
-                         __builtin_shufflevector(hi01, hi23, 0, 1, 8, 9, 4, 5, 12, 13),
-                         __builtin_shufflevector(hi01, hi23, 2, 3, 10, 11, 6, 7, 14, 15)};
-    // Word 0 (texture, level): the low half's level, then the high half's.
-    const auto w0 = static_cast<std::uint32_t>(head(site, level, 0, 0));
-    const auto w0_next = static_cast<std::uint32_t>(head(site, level + 1, 0, 0));
-    const u32x8 texture_level = {w0, w0, w0, w0, w0_next, w0_next, w0_next, w0_next};
+    const __m256i low16 = _mm256_set1_epi32(0xFFFF);
+    const __m256i ux0 = _mm256_and_si256(reinterpret_cast<__m256i>(x0), low16);
+    const __m256i ux1 = _mm256_and_si256(reinterpret_cast<__m256i>(x1), low16);
+    const __m256i uy0 = _mm256_slli_epi32(reinterpret_cast<__m256i>(y0), 16);
+    const __m256i uy1 = _mm256_slli_epi32(reinterpret_cast<__m256i>(y1), 16);
+    // Word 1 (x | y << 16) of footprint texel k, lane j (pixel j & 3, level j >> 2).
+    const __m256i xy[4] = {_mm256_or_si256(ux0, uy0), _mm256_or_si256(ux1, uy0), _mm256_or_si256(ux0, uy1),
+                           _mm256_or_si256(ux1, uy1)};
+    // Word 0 (texture, level) of each lane: the low half's level, then the high half's; words 2
+    // and 3 (pixel, triangle) of pixels 0 and 1, then 2 and 3, in each half.
+    const auto w0 = static_cast<int>(head(site, level, 0, 0));
+    const auto w0_next = static_cast<int>(head(site, level + 1, 0, 0));
+    const __m256i texture_level = _mm256_setr_epi32(w0, w0, w0, w0, w0_next, w0_next, w0_next, w0_next);
+    const __m256i pixel_x =
+        _mm256_and_si256(_mm256_add_epi32(_mm256_set1_epi32(qx), _mm256_setr_epi32(0, 1, 0, 1, 0, 1, 0, 1)), low16);
+    const __m256i pixel_y =
+        _mm256_slli_epi32(_mm256_add_epi32(_mm256_set1_epi32(qy), _mm256_setr_epi32(0, 0, 1, 1, 0, 0, 1, 1)), 16);
+    const __m256i pixel = _mm256_or_si256(pixel_x, pixel_y);
+    const __m256i triangle = _mm256_set1_epi32(static_cast<int>(site.triangle));
+    const __m256i tail01 = _mm256_unpacklo_epi32(pixel, triangle), tail23 = _mm256_unpackhi_epi32(pixel, triangle);
+    // Pixel p's event for texel k: `level`'s in the low half, level + 1's in the high half.
+    __m256i head01[4], head23[4];
+    for (int k = 0; k < 4; ++k) {
+      head01[k] = _mm256_unpacklo_epi32(texture_level, xy[k]);
+      head23[k] = _mm256_unpackhi_epi32(texture_level, xy[k]);
+    }
+    // Pixel p's events in order: texels 0-3 of `level`, then (kTwoLevels) texels 0-3 of level + 1.
     TexelAccess* out = window_.reserve_streamed(16 * kLevels);
+    const QuadStores how = quad_stores(out);
     for (int p = 0; p < 4; ++p) {
-      // Words 2 and 3: the pixel, the triangle.
-      const std::uint32_t pixel =
-          static_cast<std::uint16_t>(qx + (p & 1)) | std::uint32_t{static_cast<std::uint16_t>(qy + (p >> 1))} << 16;
-      const std::uint32_t triangle = site.triangle;
-      const u32x8 tail_words = {pixel, triangle, pixel, triangle, pixel, triangle, pixel, triangle};
-      const u32x8 a = __builtin_shufflevector(texture_level, xy[p], 0, 8, 1, 9, 4, 12, 5, 13);    // w0 c0 w0 c1
-      const u32x8 b = __builtin_shufflevector(texture_level, xy[p], 2, 10, 3, 11, 6, 14, 7, 15);  // w0 c2 w0 c3
-      // Two events a vector: events 0-3 of the pixel (level), then 4-7 (level + 1).
-      const u32x8 events[4] = {__builtin_shufflevector(a, tail_words, 0, 1, 8, 9, 2, 3, 10, 11),
-                               __builtin_shufflevector(b, tail_words, 0, 1, 8, 9, 2, 3, 10, 11),
-                               __builtin_shufflevector(a, tail_words, 4, 5, 12, 13, 6, 7, 14, 15),
-                               __builtin_shufflevector(b, tail_words, 4, 5, 12, 13, 6, 7, 14, 15)};
-      store_vectors<2 * kLevels>(out + 4 * kLevels * p, events);
+      const __m256i* heads = p < 2 ? head01 : head23;
+      const __m256i tail = p < 2 ? tail01 : tail23;
+      __m256i k[4];
+      for (int i = 0; i < 4; ++i)
+        k[i] = p % 2 == 0 ? _mm256_unpacklo_epi64(heads[i], tail) : _mm256_unpackhi_epi64(heads[i], tail);
+      const __m256i events[4] = {
+          _mm256_permute2x128_si256(k[0], k[1], 0x20), _mm256_permute2x128_si256(k[2], k[3], 0x20),
+          _mm256_permute2x128_si256(k[0], k[1], 0x31), _mm256_permute2x128_si256(k[2], k[3], 0x31)};
+      store_vectors<2 * kLevels>(how, out + 4 * kLevels * p, events);
     }
     window_.stored();
   }
-  // The first kCount of the vectors, two whole events each, into out[0..2 kCount): streamed when
-  // the window streams, 32 bytes a store where `out` allows it (the usual case: quads record even
-  // numbers of events), else 16.
-  template <int kCount, typename Vector>
-  [[gnu::always_inline]] __attribute__((target("avx2"))) void store_vectors(TexelAccess* out,
-                                                                            const Vector (&events)[4]) {
-    if (window_.streaming()) {
-      const auto at = reinterpret_cast<std::uintptr_t>(out);
-      if (at % 32 == 0) {
-        for (int i = 0; i < kCount; ++i)
-          _mm256_stream_si256(reinterpret_cast<__m256i*>(out) + i, reinterpret_cast<__m256i>(events[i]));
+  // How record_quad_avx2 stores a quad's events, decided once per quad: streamed when the window
+  // streams, 32 bytes a store where `out` allows it (the usual case: quads record even numbers of
+  // events), else 16; or with ordinary stores.
+  enum class QuadStores { Plain, Stream32, Stream16 };
+  QuadStores quad_stores(const TexelAccess* out) const {
+    if (!window_.streaming()) return QuadStores::Plain;
+    const auto at = reinterpret_cast<std::uintptr_t>(out);
+    return at % 32 == 0 ? QuadStores::Stream32 : at % 16 == 0 ? QuadStores::Stream16 : QuadStores::Plain;
+  }
+  // The first kCount of the vectors, two whole events each, into out[0..2 kCount).
+  template <int kCount>
+  [[gnu::always_inline]] __attribute__((target("avx2"))) static void store_vectors(QuadStores how, TexelAccess* out,
+                                                                                   const __m256i (&events)[4]) {
+    auto* to = reinterpret_cast<__m256i*>(out);
+    switch (how) {
+      case QuadStores::Stream32:
+        for (int i = 0; i < kCount; ++i) _mm256_stream_si256(to + i, events[i]);
         return;
-      }
-      if (at % 16 == 0) {
+      case QuadStores::Stream16:
         for (int i = 0; i < kCount; ++i) {
-          const __m256i v = reinterpret_cast<__m256i>(events[i]);
-          _mm_stream_si128(reinterpret_cast<__m128i*>(out) + 2 * i, _mm256_castsi256_si128(v));
-          _mm_stream_si128(reinterpret_cast<__m128i*>(out) + 2 * i + 1, _mm256_extracti128_si256(v, 1));
+          _mm_stream_si128(reinterpret_cast<__m128i*>(to + i), _mm256_castsi256_si128(events[i]));
+          _mm_stream_si128(reinterpret_cast<__m128i*>(to + i) + 1, _mm256_extracti128_si256(events[i], 1));
         }
         return;
-      }
+      case QuadStores::Plain:
+        break;
     }
-    std::memcpy(static_cast<void*>(out), events, kCount * sizeof events[0]);
+    for (int i = 0; i < kCount; ++i) _mm256_storeu_si256(to + i, events[i]);
   }
 #endif
   // Whole events' words into `out`. Streamed when the window streams: 16 bytes a store from a
